@@ -1,0 +1,27 @@
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <numbers>
+#include <string>
+
+namespace rad {
+
+// A diffuse material. Reflectance is the albedo ρ per RGB channel, each in [0, 1); emission is the emitted
+// radiance Le per channel (MTL `Ke`), so the emitted radiosity is E = π Le.
+struct Material {
+    std::string name;
+    glm::dvec3 reflectance{0.5};
+    glm::dvec3 emission{0.0};
+
+    bool emits() const { return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0; }
+    glm::dvec3 emitted_radiosity() const { return emission * std::numbers::pi; }
+};
+
+// The material used where a file names none, or names one that does not exist.
+Material default_material();
+
+// Throws InputError, prefixed by `where` (a file and line, say), when reflectance is outside [0, 1) or
+// emission is negative, NaN or infinite.
+void validate_material(const Material& material, const std::string& where);
+
+}  // namespace rad

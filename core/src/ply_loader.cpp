@@ -1,0 +1,159 @@
+// OpenMesh's IO header must come before any mesh header.
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "rad/error.hpp"
+#include "rad/polygon_soup.hpp"
+#include "rad/scene_loader.hpp"
+#include "text_file.hpp"
+
+namespace rad {
+
+namespace {
+
+struct PlyTraits : OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3d;
+    using Color = OpenMesh::Vec3f;  // OpenMesh scales 8-bit colours to [0, 1]
+};
+using PlyMesh = OpenMesh::PolyMesh_ArrayKernelT<PlyTraits>;
+
+// Checks the element counts of a PLY header against the file's size before OpenMesh reserves memory for
+// them, so a forged header cannot make us allocate gigabytes.
+void check_ply_header(const std::string& path, const std::string& text) {
+    const std::size_t header_end = text.find("end_header");
+    if (text.compare(0, 3, "ply") != 0 || header_end == std::string::npos) {
+        throw InputError(path + ": not a PLY file (no 'ply' ... 'end_header' header)");
+    }
+    std::istringstream header(text.substr(0, header_end));
+    std::string line;
+    bool binary = false;
+    std::size_t number = 0;
+    const std::size_t body = text.size() - header_end;
+    while (std::getline(header, line)) {
+        ++number;
+        const std::vector<std::string_view> words = split_words(line);
+        if (words.size() >= 2 && words[0] == "format") binary = words[1] != "ascii";
+        if (words.size() < 3 || words[0] != "element") continue;
+        long long count = 0;
+        if (!parse_integer(words[2], count) || count < 0) {
+            throw InputError(path + ":" + std::to_string(number) + ": malformed element count '" +
+                             std::string(words[2]) + "'");
+        }
+        // The fewest bytes one vertex or face can take: three 4-byte floats, or a count and three 1-byte
+        // indices, in binary; "0 0 0\n" or "3 0 1 2\n" in ASCII. Other elements take at least a byte.
+        const bool is_vertex = words[1] == "vertex";
+        const std::size_t min_bytes = is_vertex ? (binary ? 12 : 6) : (words[1] == "face" ? (binary ? 4 : 8) : 1);
+        if (static_cast<double>(count) * static_cast<double>(min_bytes) > static_cast<double>(body)) {
+            throw InputError(path + ":" + std::to_string(number) + ": header declares " + std::to_string(count) +
+                             " " + std::string(words[1]) + " elements, more than the file's " +
+                             std::to_string(body) + " bytes of data can hold");
+        }
+    }
+}
+
+// OpenMesh reports why a read failed on its error stream; catch the first line for our message.
+class CapturedErrors {
+public:
+    CapturedErrors() {
+        omerr().disconnect(std::cerr);
+        omerr().connect(captured_);
+    }
+    ~CapturedErrors() {
+        omerr().disconnect(captured_);
+        omerr().connect(std::cerr);
+    }
+    std::string first_line() const {
+        std::string text = captured_.str();
+        const auto start = text.find_first_not_of(" \n\t");
+        if (start == std::string::npos) return "";
+        text = text.substr(start);
+        return text.substr(0, text.find('\n'));
+    }
+
+private:
+    std::ostringstream captured_;
+};
+
+PlyMesh read_ply_mesh(const std::string& path, bool& has_face_colors, bool& has_vertex_colors) {
+    PlyMesh mesh;
+    mesh.request_vertex_colors();
+    mesh.request_face_colors();
+    OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexColor | OpenMesh::IO::Options::FaceColor;
+    CapturedErrors errors;
+    if (!OpenMesh::IO::read_mesh(mesh, path, options)) {
+        const std::string why = errors.first_line();
+        throw InputError(path + ": malformed PLY" + (why.empty() ? "" : " (" + why + ")"));
+    }
+    has_face_colors = options.face_has_color();
+    has_vertex_colors = options.vertex_has_color();
+    return mesh;
+}
+
+OpenMesh::Vec3f face_colour(const PlyMesh& mesh, PlyMesh::FaceHandle f, bool face_colors) {
+    if (face_colors) return mesh.color(f);
+    OpenMesh::Vec3f sum(0.0f);
+    int count = 0;
+    for (auto v : mesh.fv_range(f)) {
+        sum += mesh.color(v);
+        ++count;
+    }
+    return count > 0 ? sum / static_cast<float>(count) : sum;
+}
+
+// Faces of one colour become one surface whose reflectance is that colour.
+PolygonSoup to_soup(const std::string& path, const PlyMesh& mesh, bool face_colors, bool vertex_colors) {
+    PolygonSoup soup;
+    soup.source = path;
+    for (auto v : mesh.vertices()) {
+        const auto& p = mesh.point(v);
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+            throw InputError(path + ": vertex " + std::to_string(v.idx()) + " has a coordinate that is not finite");
+        }
+        soup.positions.emplace_back(p[0], p[1], p[2]);
+    }
+    const bool coloured = face_colors || vertex_colors;
+    if (!coloured) soup.groups.push_back({"mesh", default_material()});
+    std::map<std::array<int, 3>, std::uint32_t> group_of_colour;
+    for (auto f : mesh.faces()) {
+        PolygonSoup::Polygon polygon;
+        for (auto v : mesh.fv_range(f)) polygon.vertices.push_back(static_cast<std::uint32_t>(v.idx()));
+        if (coloured) {
+            const OpenMesh::Vec3f c = face_colour(mesh, f, face_colors);
+            const std::array<int, 3> key{int(std::lround(c[0] * 255)), int(std::lround(c[1] * 255)),
+                                         int(std::lround(c[2] * 255))};
+            auto [it, added] = group_of_colour.try_emplace(key, static_cast<std::uint32_t>(soup.groups.size()));
+            if (added) {
+                Material m;
+                m.name = "colour " + std::to_string(key[0]) + " " + std::to_string(key[1]) + " " + std::to_string(key[2]);
+                m.reflectance = glm::dvec3(key[0], key[1], key[2]) / 255.0;
+                validate_material(m, path + ": face " + std::to_string(f.idx()));
+                soup.groups.push_back({m.name, m});
+            }
+            polygon.group = it->second;
+        }
+        soup.polygons.push_back(std::move(polygon));
+    }
+    return soup;
+}
+
+}  // namespace
+
+Scene load_ply(const std::string& path) {
+    check_ply_header(path, read_text_file(path));
+    bool face_colors = false;
+    bool vertex_colors = false;
+    const PlyMesh mesh = read_ply_mesh(path, face_colors, vertex_colors);
+    Scene scene = build_scene(to_soup(path, mesh, face_colors, vertex_colors));
+    if (!face_colors && !vertex_colors) {
+        scene.warnings.insert(scene.warnings.begin(),
+                              path + ": no colours; every face uses the default material (reflectance 0.5)");
+    }
+    return scene;
+}
+
+}  // namespace rad

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rad::test {
+
+struct CommandResult {
+    int status = -1;  // exit status, or -1 if the process did not exit normally
+    std::string out;
+    std::string err;
+};
+
+// Runs the radiosity binary with these arguments (no shell involved) and captures what it prints.
+CommandResult run_radiosity(const std::vector<std::string>& args);
+
+// A fresh directory under the build tree's temp space, removed at the end of the test.
+class TempDir {
+public:
+    TempDir();
+    ~TempDir();
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+    // Writes `text` to name inside the directory and returns the full path.
+    std::string write(const std::string& name, const std::string& text) const;
+
+private:
+    std::filesystem::path path_;
+};
+
+std::string data_path(const std::string& name);
+
+}  // namespace rad::test
