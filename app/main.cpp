@@ -3,34 +3,19 @@
 #include <exception>
 #include <iostream>
 
+#include "commands.hpp"
 #include "rad/error.hpp"
-#include "scene_options.hpp"
-#include "scene_summary.hpp"
 
 namespace {
-
-int print_summary(const rad::SceneOptions& options) {
-    rad::print_scene_summary(std::cout, rad::load_and_mesh(options));
-    return 0;
-}
 
 int run(int argc, char** argv) {
     CLI::App app{"radiosity: diffuse global illumination by the radiosity method"};
     app.require_subcommand(0, 1);
-
-    rad::SceneOptions view_options;
-    CLI::App* view = app.add_subcommand("view", "Show SCENE (default command; prints its summary until the "
-                                                "interactive viewer lands)");
-    rad::add_scene_options(*view, view_options);
-
-    rad::SceneOptions info_options;
-    CLI::App* info = app.add_subcommand("info", "Print SCENE's surfaces, materials, patch count, area and bounds");
-    rad::add_scene_options(*info, info_options);
-
-    // `radiosity SCENE` with no command means `radiosity view SCENE`.
-    rad::SceneOptions default_options;
-    rad::add_scene_options(app, default_options);
-
+    // Commands in the order they are tried; the view command, the default, runs when none other claims.
+    const std::vector<rad::CommandRunner> commands = {
+        rad::add_info_command(app),
+        rad::add_view_command(app),
+    };
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -41,10 +26,10 @@ int run(int argc, char** argv) {
         std::cerr << "radiosity: error: " << e.what() << " (see radiosity --help)\n";
         return 2;
     }
-
-    if (*info) return print_summary(info_options);
-    if (*view) return print_summary(view_options);
-    return print_summary(default_options);
+    for (const auto& command : commands) {
+        if (const int status = command(); status >= 0) return status;
+    }
+    return 1;
 }
 
 }  // namespace

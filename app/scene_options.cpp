@@ -1,10 +1,23 @@
 #include "scene_options.hpp"
 
+#include <cmath>
 #include <iostream>
 
 #include "rad/scene_loader.hpp"
 
 namespace rad {
+
+CLI::Validator positive_number() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            double value = 0.0;
+            if (!CLI::detail::lexical_cast(text, value) || !(value > 0.0) || !std::isfinite(value)) {
+                return "must be a positive number, not '" + text + "'";
+            }
+            return {};
+        },
+        "POSITIVE");
+}
 
 void add_scene_options(CLI::App& command, SceneOptions& options) {
     command.add_option("scene", options.scene,
@@ -13,7 +26,7 @@ void add_scene_options(CLI::App& command, SceneOptions& options) {
         ->capture_default_str();
     command.add_option("--patch-size", options.patch_size,
                        "Largest patch edge, in scene units (default: a sixteenth of the scene's largest extent)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
 }
 
 LoadedScene load_and_mesh(const SceneOptions& options) {
