@@ -290,6 +290,19 @@ double total_patch_count(const std::vector<SurfaceLayout>& layouts) {
     return count;
 }
 
+// Patch count scales about as 1/size², but edges are cut into whole segments, so check the guess and
+// grow it until it really fits.
+double patch_size_that_fits(const Scene& scene, double patch_size, double count, std::size_t max_patches) {
+    double size = patch_size * std::sqrt(count / static_cast<double>(max_patches));
+    for (int tries = 0; tries < 64; ++tries) {
+        if (total_patch_count(layout_scene(scene, size)) <= static_cast<double>(max_patches)) break;
+        size *= 1.05;
+    }
+    // Round up to three significant digits, so the printed value is at least the one checked.
+    const double step = std::pow(10.0, std::floor(std::log10(size)) - 2.0);
+    return std::ceil(size / step) * step;
+}
+
 }  // namespace
 
 double default_patch_size(const Scene& scene) {
@@ -307,8 +320,7 @@ PatchMesh build_patches(const Scene& scene, const MeshingOptions& options) {
     const std::vector<SurfaceLayout> layouts = layout_scene(scene, patch_size);
     const double count = total_patch_count(layouts);
     if (count > static_cast<double>(options.max_patches)) {
-        // Patch count scales as 1/size², so this size brings it under the limit with a little margin.
-        const double fits = patch_size * std::sqrt(count / static_cast<double>(options.max_patches)) * 1.05;
+        const double fits = patch_size_that_fits(scene, patch_size, count, options.max_patches);
         std::ostringstream msg;
         msg << "--patch-size " << patch_size << " would make " << count << " patches, more than the limit of "
             << options.max_patches << "; use --patch-size " << fits << " or larger";

@@ -10,6 +10,7 @@
 #include "rad/error.hpp"
 #include "rad/polygon_soup.hpp"
 #include "rad/scene_loader.hpp"
+#include "ply_check.hpp"
 #include "text_file.hpp"
 
 namespace rad {
@@ -21,40 +22,6 @@ struct PlyTraits : OpenMesh::DefaultTraits {
     using Color = OpenMesh::Vec3f;  // OpenMesh scales 8-bit colours to [0, 1]
 };
 using PlyMesh = OpenMesh::PolyMesh_ArrayKernelT<PlyTraits>;
-
-// Checks the element counts of a PLY header against the file's size before OpenMesh reserves memory for
-// them, so a forged header cannot make us allocate gigabytes.
-void check_ply_header(const std::string& path, const std::string& text) {
-    const std::size_t header_end = text.find("end_header");
-    if (text.compare(0, 3, "ply") != 0 || header_end == std::string::npos) {
-        throw InputError(path + ": not a PLY file (no 'ply' ... 'end_header' header)");
-    }
-    std::istringstream header(text.substr(0, header_end));
-    std::string line;
-    bool binary = false;
-    std::size_t number = 0;
-    const std::size_t body = text.size() - header_end;
-    while (std::getline(header, line)) {
-        ++number;
-        const std::vector<std::string_view> words = split_words(line);
-        if (words.size() >= 2 && words[0] == "format") binary = words[1] != "ascii";
-        if (words.size() < 3 || words[0] != "element") continue;
-        long long count = 0;
-        if (!parse_integer(words[2], count) || count < 0) {
-            throw InputError(path + ":" + std::to_string(number) + ": malformed element count '" +
-                             std::string(words[2]) + "'");
-        }
-        // The fewest bytes one vertex or face can take: three 4-byte floats, or a count and three 1-byte
-        // indices, in binary; "0 0 0\n" or "3 0 1 2\n" in ASCII. Other elements take at least a byte.
-        const bool is_vertex = words[1] == "vertex";
-        const std::size_t min_bytes = is_vertex ? (binary ? 12 : 6) : (words[1] == "face" ? (binary ? 4 : 8) : 1);
-        if (static_cast<double>(count) * static_cast<double>(min_bytes) > static_cast<double>(body)) {
-            throw InputError(path + ":" + std::to_string(number) + ": header declares " + std::to_string(count) +
-                             " " + std::string(words[1]) + " elements, more than the file's " +
-                             std::to_string(body) + " bytes of data can hold");
-        }
-    }
-}
 
 // OpenMesh reports why a read failed on its error stream; catch the first line for our message.
 class CapturedErrors {
@@ -144,7 +111,7 @@ PolygonSoup to_soup(const std::string& path, const PlyMesh& mesh, bool face_colo
 }  // namespace
 
 Scene load_ply(const std::string& path) {
-    check_ply_header(path, read_text_file(path));
+    check_ply(path, read_text_file(path));
     bool face_colors = false;
     bool vertex_colors = false;
     const PlyMesh mesh = read_ply_mesh(path, face_colors, vertex_colors);

@@ -1,0 +1,13 @@
+#pragma once
+
+#include <string>
+
+namespace rad {
+
+// OpenMesh's PLY reader trusts its input: a forged count makes it allocate without bound and a malformed
+// number can make it write out of bounds. This walks the header and every element first (ASCII or binary)
+// and throws InputError naming the file and line (or element) at the first thing that is wrong: counts the
+// file cannot hold, malformed or non-finite numbers, face indices out of range, truncation, extra data.
+void check_ply(const std::string& path, const std::string& bytes);
+
+}  // namespace rad

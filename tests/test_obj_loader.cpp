@@ -1,0 +1,167 @@
+// The OBJ + MTL loader: what it makes of good files, and a one-line error naming file and line for bad ones.
+#include <gtest/gtest.h>
+
+#include "rad/error.hpp"
+#include "rad/scene_loader.hpp"
+#include "test_support.hpp"
+
+namespace rad {
+namespace {
+
+using test::TempDir;
+
+const Surface* find_surface(const Scene& scene, const std::string& name) {
+    for (const Surface& s : scene.surfaces) {
+        if (s.name == name) return &s;
+    }
+    return nullptr;
+}
+
+// tinyobjloader's number parser is not always correctly rounded: compare within a few ulps.
+void expect_rgb(const glm::dvec3& actual, const glm::dvec3& expected) {
+    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(actual[c], expected[c]) << "channel " << c;
+}
+
+// Expects load_obj to throw InputError whose message contains every one of `parts`.
+void expect_obj_error(const std::string& path, std::initializer_list<std::string> parts) {
+    try {
+        load_obj(path);
+        ADD_FAILURE() << path << ": expected an InputError";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        for (const std::string& part : parts) EXPECT_NE(what.find(part), std::string::npos) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << "one line: " << what;
+    }
+}
+
+const char* kMtl =
+    "newmtl white\nKd 0.7 0.7 0.7\n"
+    "newmtl lamp\nKd 0.5 0.5 0.5\nKe 4 3 2\n";
+
+TEST(ObjLoader, MaterialsAndGroupsBecomeSurfaces) {
+    TempDir dir;
+    dir.write("s.mtl", kMtl);
+    const std::string obj = dir.write("s.obj",
+                                      "mtllib s.mtl\n"
+                                      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                      "v 0 0 1\nv 1 0 1\nv 1 1 1\n"
+                                      "o floor\nusemtl white\nf 1 2 3 4\n"
+                                      "o lamp\nusemtl lamp\nf 5 7 6\n");
+    const Scene scene = load_obj(obj);
+    ASSERT_EQ(scene.surfaces.size(), 2u);
+    const Surface* floor = find_surface(scene, "floor");
+    const Surface* lamp = find_surface(scene, "lamp");
+    ASSERT_TRUE(floor && lamp);
+    expect_rgb(floor->material.reflectance, glm::dvec3(0.7));
+    expect_rgb(lamp->material.emission, glm::dvec3(4, 3, 2));
+    EXPECT_EQ(floor->mesh.n_faces(), 1u);
+    EXPECT_DOUBLE_EQ(surface_area(floor->mesh), 1.0);
+    EXPECT_TRUE(scene.warnings.empty());
+}
+
+TEST(ObjLoader, UsemtlRunsInOneObjectAreSeparateSurfaces) {
+    TempDir dir;
+    dir.write("s.mtl", kMtl);
+    const std::string obj = dir.write("s.obj",
+                                      "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                      "o room\nusemtl white\nf 1 2 3\nusemtl lamp\nf 1 3 4\n");
+    const Scene scene = load_obj(obj);
+    ASSERT_EQ(scene.surfaces.size(), 2u);
+    EXPECT_NE(find_surface(scene, "room/white"), nullptr);
+    EXPECT_NE(find_surface(scene, "room/lamp"), nullptr);
+}
+
+TEST(ObjLoader, OnlyPolygonsThatAreNotPlanarConvexAreTriangulated) {
+    TempDir dir;
+    const std::string obj = dir.write("p.obj",
+                                      // a convex pentagon, an L-shaped hexagon, a non-planar quad
+                                      "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\n"
+                                      "v 0 0 5\nv 2 0 5\nv 2 1 5\nv 1 1 5\nv 1 2 5\nv 0 2 5\n"
+                                      "v 0 0 9\nv 1 0 9\nv 1 1 9.3\nv 0 1 9\n"
+                                      "g pentagon\nf 1 2 3 4 5\ng ell\nf 6 7 8 9 10 11\ng bent\nf 12 13 14 15\n");
+    const Scene scene = load_obj(obj);
+    EXPECT_EQ(find_surface(scene, "pentagon")->mesh.n_faces(), 1u);
+    EXPECT_EQ(find_surface(scene, "ell")->mesh.n_faces(), 4u);
+    EXPECT_NEAR(surface_area(find_surface(scene, "ell")->mesh), 3.0, 1e-12);
+    EXPECT_EQ(find_surface(scene, "bent")->mesh.n_faces(), 2u);
+}
+
+TEST(ObjLoader, ZeroAreaFacesAreDroppedAndCounted) {
+    TempDir dir;
+    const std::string obj = dir.write("z.obj",
+                                      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 2 0 0\n"
+                                      "f 1 2 3\nf 1 2 4\nf 1 1 2\n");
+    const Scene scene = load_obj(obj);
+    EXPECT_EQ(scene.surfaces.at(0).mesh.n_faces(), 1u);
+    bool counted = false;
+    for (const auto& w : scene.warnings) counted |= w.find("dropped 2 face") != std::string::npos;
+    EXPECT_TRUE(counted);
+}
+
+TEST(ObjLoader, MissingMtlFallsBackToTheDefaultMaterial) {
+    TempDir dir;
+    const std::string obj = dir.write("m.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl white\nf 1 2 3\n");
+    const Scene scene = load_obj(obj);
+    expect_rgb(scene.surfaces.at(0).material.reflectance, glm::dvec3(0.5));
+    EXPECT_EQ(scene.surfaces.at(0).material.emission, glm::dvec3(0.0));
+    bool warned = false;
+    for (const auto& w : scene.warnings) warned |= w.find("m.obj:1: material library 'gone.mtl' not found") == 0 ||
+                                                    w.find("gone.mtl' not found") != std::string::npos;
+    EXPECT_TRUE(warned);
+}
+
+TEST(ObjLoader, BadInputNamesFileAndLine) {
+    TempDir dir;
+    expect_obj_error((dir.path() / "absent.obj").string(), {"absent.obj", "no such file"});
+    expect_obj_error(dir.write("a.obj", "v 0 0 0\nv 1 abc 0\n"), {"a.obj:2:", "malformed number 'abc'"});
+    expect_obj_error(dir.write("b.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 9\n"),
+                     {"b.obj:4:", "vertex index 9 is out of range"});
+    expect_obj_error(dir.write("c.obj", "v 0 0 0\nv nan 0 0\n"), {"c.obj:2:", "not a finite number"});
+    expect_obj_error(dir.write("d.obj", "v 0 0 0\nv 1 0 inf\n"), {"d.obj:2:", "not a finite number"});
+    expect_obj_error(dir.write("e.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"), {"e.obj:3:", "at least 3 corners"});
+    expect_obj_error(dir.write("f.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n"), {"f.obj:4:", "index 0"});
+    expect_obj_error(dir.write("g.obj", "v 0 0\n"), {"g.obj:1:", "needs 3 to 7 numbers"});
+    expect_obj_error(dir.write("h.obj", std::string("v 0 0 0\n\x7f\x45\x4c\x46\0\0junk", 19)),
+                     {"h.obj:2:", "binary"});
+    expect_obj_error(dir.write("i.obj", "# nothing but a comment\n"), {"i.obj", "no faces"});
+    expect_obj_error(dir.write("j.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2 3\n"),
+                     {"j.obj:4:", "texture coordinate index 1 is out of range"});
+}
+
+TEST(ObjLoader, BadMaterialsNameTheMtlLine) {
+    TempDir dir;
+    const std::string geometry = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n";
+    dir.write("m.mtl", "newmtl x\nKd 1.0 0.5 0.5\n");
+    expect_obj_error(dir.write("k.obj", geometry), {"m.mtl:2:", "reflectance (Kd) '1.0' must lie in [0, 1)"});
+    dir.write("m.mtl", "newmtl x\nKd 0.5 0.5 0.5\nKe 1 -2 0\n");
+    expect_obj_error(dir.write("l.obj", geometry), {"m.mtl:3:", "emission (Ke) '-2'"});
+    dir.write("m.mtl", "newmtl x\nKd 0.5 nan 0.5\n");
+    expect_obj_error(dir.write("n.obj", geometry), {"m.mtl:2:", "Kd"});
+    dir.write("m.mtl", "newmtl x\nKe 1 1\n");
+    expect_obj_error(dir.write("o.obj", geometry), {"m.mtl:2:", "three numbers"});
+    dir.write("m.mtl", "newmtl x\nKd -0.1 0 0\n");
+    expect_obj_error(dir.write("p.obj", geometry), {"m.mtl:2:", "[0, 1)"});
+}
+
+TEST(ObjLoader, CommandLineExitsWithStatus2AndOneLine) {
+    TempDir dir;
+    const std::string bad = dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 7\n");
+    const auto result = test::run_radiosity({"info", bad});
+    EXPECT_EQ(result.status, 2);
+    EXPECT_NE(result.err.find("bad.obj:4: vertex index 7 is out of range"), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_TRUE(result.out.empty());
+}
+
+TEST(ObjLoader, PublishedCornellBoxAssetLoads) {
+    const Scene scene = load_scene(std::string(RAD_SOURCE_DIR) + "/assets/cornell_box.obj");
+    EXPECT_EQ(scene.surfaces.size(), 8u);
+    const Surface* light = find_surface(scene, "light");
+    ASSERT_NE(light, nullptr);
+    expect_rgb(light->material.emission, glm::dvec3(17, 12, 4));
+    // The published ceiling is the full quad, overlapping the light.
+    EXPECT_NEAR(surface_area(find_surface(scene, "ceiling")->mesh), 556.0 * 559.2, 1e-6);
+}
+
+}  // namespace
+}  // namespace rad

@@ -1,0 +1,121 @@
+// The PLY loader: colours become reflectance, and malformed or forged files are refused before OpenMesh
+// reads them.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "rad/error.hpp"
+#include "rad/scene_loader.hpp"
+#include "test_support.hpp"
+
+namespace rad {
+namespace {
+
+using test::TempDir;
+
+const std::string kFaceColourHeader =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 2\nproperty list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\n"
+    "property uchar blue\nend_header\n";
+const std::string kSquare = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+
+void expect_ply_error(const std::string& path, std::initializer_list<std::string> parts) {
+    try {
+        load_ply(path);
+        ADD_FAILURE() << path << ": expected an InputError";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        for (const std::string& part : parts) EXPECT_NE(what.find(part), std::string::npos) << what;
+    }
+}
+
+TEST(PlyLoader, FaceColoursBecomeOneSurfacePerColour) {
+    TempDir dir;
+    const std::string path =
+        dir.write("f.ply", kFaceColourHeader + kSquare + "3 0 1 2 204 102 51\n3 0 2 3 10 20 30\n");
+    const Scene scene = load_ply(path);
+    ASSERT_EQ(scene.surfaces.size(), 2u);
+    EXPECT_EQ(scene.surfaces[0].material.reflectance, glm::dvec3(204, 102, 51) / 255.0);
+    EXPECT_EQ(scene.surfaces[1].material.reflectance, glm::dvec3(10, 20, 30) / 255.0);
+    EXPECT_DOUBLE_EQ(total_area(scene), 1.0);
+}
+
+TEST(PlyLoader, VertexColoursAreAveragedPerFace) {
+    TempDir dir;
+    const std::string path = dir.write(
+        "v.ply",
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
+        "property list uchar int vertex_indices\nend_header\n"
+        "0 0 0 100 0 0\n1 0 0 100 0 0\n1 1 0 100 200 0\n0 1 0 100 200 0\n4 0 1 2 3\n");
+    const Scene scene = load_ply(path);
+    ASSERT_EQ(scene.surfaces.size(), 1u);
+    EXPECT_EQ(scene.surfaces[0].material.reflectance, glm::dvec3(100, 100, 0) / 255.0);
+    EXPECT_EQ(scene.surfaces[0].mesh.n_faces(), 1u);  // the planar square stays one quad
+}
+
+TEST(PlyLoader, NoColoursMeansTheDefaultMaterialWithAWarning) {
+    TempDir dir;
+    const std::string path = dir.write(
+        "n.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const Scene scene = load_ply(path);
+    EXPECT_EQ(scene.surfaces.at(0).material.reflectance, glm::dvec3(0.5));
+    ASSERT_FALSE(scene.warnings.empty());
+    EXPECT_NE(scene.warnings[0].find("no colours"), std::string::npos);
+}
+
+TEST(PlyLoader, BinaryLittleEndianIsRead) {
+    TempDir dir;
+    std::string bytes =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const float xyz[9] = {0, 0, 0, 2, 0, 0, 0, 2, 0};
+    bytes.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+    const unsigned char count = 3;
+    const std::int32_t idx[3] = {0, 1, 2};
+    bytes.append(reinterpret_cast<const char*>(&count), 1);
+    bytes.append(reinterpret_cast<const char*>(idx), sizeof idx);
+    const Scene scene = load_ply(dir.write("b.ply", bytes));
+    EXPECT_DOUBLE_EQ(total_area(scene), 2.0);
+
+    // The same file with an index out of range, and cut short.
+    std::string bad = bytes;
+    const std::int32_t seven = 7;
+    std::memcpy(bad.data() + bad.size() - 4, &seven, 4);
+    expect_ply_error(dir.write("bad.ply", bad), {"bad.ply: face 0: vertex index 7 is out of range"});
+    expect_ply_error(dir.write("short.ply", bytes.substr(0, bytes.size() - 2)), {"short.ply", "ends"});
+}
+
+TEST(PlyLoader, BadInputIsRefusedWithFileAndLine) {
+    TempDir dir;
+    const std::string good_faces = "3 0 1 2 200 100 50\n3 0 2 3 10 20 30\n";
+    expect_ply_error(dir.write("a.ply", "not a ply\n"), {"a.ply", "not a PLY file"});
+    expect_ply_error(dir.write("b.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"), {"b.ply", "end_header"});
+    // A forged count is refused before anything is allocated for it.
+    std::string forged = kFaceColourHeader;
+    forged.replace(forged.find("element face 2"), 14, "element face 2000000000");
+    expect_ply_error(dir.write("c.ply", forged + kSquare + good_faces), {"c.ply", "2000000000", "'face'"});
+    expect_ply_error(dir.write("d.ply", kFaceColourHeader + "0 0 0\n1 0 0\n1 nan 0\n0 1 0\n" + good_faces),
+                     {"d.ply:15:", "not finite"});
+    expect_ply_error(dir.write("e.ply", kFaceColourHeader + "0 0 0\n1 0 0\n1 x 0\n0 1 0\n" + good_faces),
+                     {"e.ply:15:", "malformed number 'x'"});
+    expect_ply_error(dir.write("f.ply", kFaceColourHeader + kSquare + "3 0 1 9 1 1 1\n" + good_faces),
+                     {"f.ply:17:", "vertex index 9 is out of range"});
+    expect_ply_error(dir.write("g.ply", kFaceColourHeader + kSquare + "3 0 1 2 1 1 1\n"), {"g.ply", "ends before face 1"});
+    expect_ply_error(dir.write("h.ply", kFaceColourHeader + kSquare + "3 0 1 2 1 1 1 1\n" + good_faces),
+                     {"h.ply:17:", "more values"});
+    expect_ply_error(dir.write("i.ply", kFaceColourHeader + kSquare + "3 0 1 2 255 0 0\n3 0 2 3 1 1 1\n"),
+                     {"i.ply: face 0", "reflectance"});
+}
+
+TEST(PlyLoader, CommandLineExitsWithStatus2) {
+    TempDir dir;
+    const auto result = test::run_radiosity({"info", dir.write("x.ply", "ply\nformat ascii 1.0\nelement vertex -4\n")});
+    EXPECT_EQ(result.status, 2);
+    EXPECT_NE(result.err.find("x.ply:3: malformed element declaration"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace rad
