@@ -3,9 +3,7 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 #include <cmath>
-#include <iostream>
 #include <map>
-#include <sstream>
 
 #include "rad/error.hpp"
 #include "rad/polygon_soup.hpp"
@@ -23,27 +21,15 @@ struct PlyTraits : OpenMesh::DefaultTraits {
 };
 using PlyMesh = OpenMesh::PolyMesh_ArrayKernelT<PlyTraits>;
 
-// OpenMesh reports why a read failed on its error stream; catch the first line for our message.
-class CapturedErrors {
+// check_ply has already refused malformed files, so OpenMesh's own complaints (on its error stream) would
+// only repeat ours; keep the terminal clean while it reads. (Redirecting the stream instead leaks in
+// OpenMesh 9's mostream.)
+class QuietOpenMesh {
 public:
-    CapturedErrors() {
-        omerr().disconnect(std::cerr);
-        omerr().connect(captured_);
-    }
-    ~CapturedErrors() {
-        omerr().disconnect(captured_);
-        omerr().connect(std::cerr);
-    }
-    std::string first_line() const {
-        std::string text = captured_.str();
-        const auto start = text.find_first_not_of(" \n\t");
-        if (start == std::string::npos) return "";
-        text = text.substr(start);
-        return text.substr(0, text.find('\n'));
-    }
-
-private:
-    std::ostringstream captured_;
+    QuietOpenMesh() { omerr().disable(); }
+    ~QuietOpenMesh() { omerr().enable(); }
+    QuietOpenMesh(const QuietOpenMesh&) = delete;
+    QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
 };
 
 PlyMesh read_ply_mesh(const std::string& path, bool& has_face_colors, bool& has_vertex_colors) {
@@ -51,11 +37,8 @@ PlyMesh read_ply_mesh(const std::string& path, bool& has_face_colors, bool& has_
     mesh.request_vertex_colors();
     mesh.request_face_colors();
     OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexColor | OpenMesh::IO::Options::FaceColor;
-    CapturedErrors errors;
-    if (!OpenMesh::IO::read_mesh(mesh, path, options)) {
-        const std::string why = errors.first_line();
-        throw InputError(path + ": malformed PLY" + (why.empty() ? "" : " (" + why + ")"));
-    }
+    const QuietOpenMesh quiet;
+    if (!OpenMesh::IO::read_mesh(mesh, path, options)) throw InputError(path + ": OpenMesh could not read this PLY file");
     has_face_colors = options.face_has_color();
     has_vertex_colors = options.vertex_has_color();
     return mesh;
