@@ -7,6 +7,7 @@ packages=(
   libopenmesh-dev libembree-dev libtbb-dev libglm-dev
   libtinyobjloader-dev libcli11-dev libeigen3-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libstb-dev libtinyexr-dev
 )
 
 missing=()

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <span>
+
+#include "gl/shader_program.hpp"
+
+namespace rad {
+
+struct DrawOptions {
+    float exposure_scale = 1.0f;  // 1 for linear output; 2^exposure for the window
+    bool outline = false;         // draw patch edges over the patches
+    glm::vec3 outline_colour{0.0f};
+    glm::vec3 background{0.0f};
+};
+
+// The one OpenGL renderer, for the window and for headless images alike: it draws whatever framebuffer is
+// bound. Geometry is uploaded once; after each solver step only the per-vertex colour buffer changes.
+// Needs a current OpenGL 3.3 core context for its whole life.
+class Renderer {
+public:
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Triangles over per-vertex positions, and patch edges as pairs of vertex indices.
+    void upload_geometry(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
+                         std::span<const std::uint32_t> outline_lines);
+    // Linear radiance per vertex (as many as the positions uploaded).
+    void update_colours(std::span<const glm::vec3> radiance);
+    void draw(const glm::mat4& view_projection, const DrawOptions& options) const;
+
+    std::size_t geometry_uploads() const { return geometry_uploads_; }
+    std::size_t colour_uploads() const { return colour_uploads_; }
+
+private:
+    ShaderProgram patch_program_;
+    ShaderProgram outline_program_;
+    GLuint vertex_array_ = 0;
+    GLuint buffers_[4] = {};  // positions, colours, triangle indices, outline indices
+    std::size_t vertex_count_ = 0;
+    std::size_t triangle_index_count_ = 0;
+    std::size_t outline_index_count_ = 0;
+    std::size_t geometry_uploads_ = 0;
+    std::size_t colour_uploads_ = 0;
+};
+
+}  // namespace rad

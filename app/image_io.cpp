@@ -1,0 +1,129 @@
+#include "image_io.hpp"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+#include <tinyexr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+#include "rad/error.hpp"
+
+namespace rad {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+void write_png(const std::string& path, const RadianceImage& image, double exposure) {
+    const float scale = static_cast<float>(std::exp2(exposure));
+    std::vector<unsigned char> bytes(image.pixels.size() * 3);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            bytes[3 * i + c] = static_cast<unsigned char>(std::lround(255.0f * srgb_encode(image.pixels[i][c] * scale)));
+        }
+    }
+    if (!stbi_write_png(path.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3)) {
+        throw std::runtime_error(path + ": cannot write PNG");
+    }
+}
+
+void write_exr(const std::string& path, const RadianceImage& image) {
+    const char* error = nullptr;
+    if (SaveEXR(&image.pixels[0].x, image.width, image.height, 3, 0, path.c_str(), &error) < 0) {
+        const std::string why = error ? error : "unknown error";
+        FreeEXRErrorMessage(error);
+        throw std::runtime_error(path + ": cannot write EXR: " + why);
+    }
+}
+
+// PFM: a three-line text header, then little-endian float RGB rows from the bottom row up.
+void write_pfm(const std::string& path, const RadianceImage& image) {
+    std::ofstream out(path, std::ios::binary);
+    out << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
+    for (int y = image.height - 1; y >= 0; --y) {
+        out.write(reinterpret_cast<const char*>(&image.pixels[static_cast<std::size_t>(y) * image.width]),
+                  static_cast<std::streamsize>(image.width * sizeof(glm::vec3)));
+    }
+    if (!out) throw std::runtime_error(path + ": cannot write PFM");
+}
+
+RadianceImage read_pfm(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string magic;
+    RadianceImage image;
+    double scale = 0.0;
+    in >> magic >> image.width >> image.height >> scale;
+    in.get();
+    if (magic != "PF" || image.width <= 0 || image.height <= 0 || scale >= 0.0) {
+        throw InputError(path + ": not a little-endian RGB PFM image");
+    }
+    image.pixels.resize(static_cast<std::size_t>(image.width) * image.height);
+    for (int y = image.height - 1; y >= 0; --y) {
+        in.read(reinterpret_cast<char*>(&image.pixels[static_cast<std::size_t>(y) * image.width]),
+                static_cast<std::streamsize>(image.width * sizeof(glm::vec3)));
+    }
+    if (!in) throw InputError(path + ": truncated PFM image");
+    return image;
+}
+
+RadianceImage read_png(const std::string& path) {
+    int w = 0, h = 0, n = 0;
+    unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 3);
+    if (!data) throw InputError(path + ": cannot read PNG");
+    RadianceImage image{w, h, std::vector<glm::vec3>(static_cast<std::size_t>(w) * h)};
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        image.pixels[i] = glm::vec3(data[3 * i], data[3 * i + 1], data[3 * i + 2]) / 255.0f;
+    }
+    stbi_image_free(data);
+    return image;
+}
+
+}  // namespace
+
+float srgb_encode(float linear) {
+    const float x = std::clamp(linear, 0.0f, 1.0f);
+    return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+void write_image(const std::string& path, const RadianceImage& image, double exposure) {
+    const std::string ext = lower_extension(path);
+    if (ext != ".png" && ext != ".exr" && ext != ".pfm") {
+        throw InputError("--out " + path + ": unknown image format '" + ext + "' (use .png, .exr or .pfm)");
+    }
+    const std::filesystem::path target(path);
+    const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
+    if (!std::filesystem::is_directory(folder)) throw InputError("--out " + path + ": no such folder");
+    // The temporary keeps the extension: the writers do not care, but a person looking at the folder does.
+    const std::string temporary = (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) +
+                                             ".tmp" + ext))
+                                      .string();
+    try {
+        if (ext == ".png") write_png(temporary, image, exposure);
+        if (ext == ".exr") write_exr(temporary, image);
+        if (ext == ".pfm") write_pfm(temporary, image);
+        std::filesystem::rename(temporary, target);
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw;
+    }
+}
+
+RadianceImage read_image(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".pfm") return read_pfm(path);
+    if (ext == ".png") return read_png(path);
+    throw InputError(path + ": can only read .pfm and .png images");
+}
+
+}  // namespace rad

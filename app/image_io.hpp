@@ -1,0 +1,27 @@
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+namespace rad {
+
+// An image of linear radiance L (scene units), width × height, top row first.
+struct RadianceImage {
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec3> pixels;
+};
+
+// Writes by the file's extension: .exr (tinyexr) and .pfm hold the radiance as it is; .png applies
+// L · 2^exposure and the sRGB curve. The file appears whole or not at all (written to a temporary name in
+// the same folder, then renamed). Throws InputError for an unknown extension or a folder we cannot write.
+void write_image(const std::string& path, const RadianceImage& image, double exposure = 0.0);
+
+// Reads .pfm or .png back (PNG as its 8-bit sRGB values / 255, not linearized) for tests and tools.
+RadianceImage read_image(const std::string& path);
+
+// The sRGB transfer curve of a linear value, clamped to [0, 1].
+float srgb_encode(float linear);
+
+}  // namespace rad

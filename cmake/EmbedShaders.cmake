@@ -1,0 +1,18 @@
+# Writes OUT, a C++ file holding every shader in SHADERS as a string, so the binary runs from any folder.
+# Run as: cmake -DOUT=file.cpp -DSHADERS="a.vert|b.frag" -P EmbedShaders.cmake
+string(REPLACE "|" ";" SHADERS "${SHADERS}")
+set(body "// Generated from shaders/ by cmake/EmbedShaders.cmake; do not edit.\n")
+string(APPEND body "#include \"gl/embedded_shaders.hpp\"\n\nnamespace rad {\n\nnamespace {\n")
+string(APPEND body "struct EmbeddedShader {\n    std::string_view name;\n    std::string_view source;\n};\n")
+string(APPEND body "constexpr EmbeddedShader kShaders[] = {\n")
+foreach(shader ${SHADERS})
+  get_filename_component(name ${shader} NAME)
+  file(READ ${shader} source)
+  string(APPEND body "    {\"${name}\", R\"glsl(${source})glsl\"},\n")
+endforeach()
+string(APPEND body "};\n}  // namespace\n\n")
+string(APPEND body "std::string_view embedded_shader(std::string_view name) {\n")
+string(APPEND body "    for (const auto& s : kShaders) {\n        if (s.name == name) return s.source;\n    }\n")
+string(APPEND body "    return {};\n}\n\n}  // namespace rad\n")
+file(WRITE ${OUT}.tmp "${body}")
+file(RENAME ${OUT}.tmp ${OUT})
