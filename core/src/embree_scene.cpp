@@ -1,0 +1,169 @@
+#include "rad/embree_scene.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+namespace rad {
+
+namespace {
+
+const char* error_name(RTCError code) {
+    switch (code) {
+        case RTC_ERROR_NONE:
+            return "no error";
+        case RTC_ERROR_INVALID_ARGUMENT:
+            return "invalid argument";
+        case RTC_ERROR_INVALID_OPERATION:
+            return "invalid operation";
+        case RTC_ERROR_OUT_OF_MEMORY:
+            return "out of memory";
+        case RTC_ERROR_UNSUPPORTED_CPU:
+            return "unsupported CPU";
+        case RTC_ERROR_CANCELLED:
+            return "cancelled";
+        default:
+            return "unknown error";
+    }
+}
+
+// Embree's (unnormalized) geometric normal Ng of a quad points to the side from which its corners run
+// counter-clockwise, our front, so a ray reaches a front when it runs against Ng. test_embree_scene pins
+// this down.
+bool reaches_front(const RTCRayHit& hit) {
+    return hit.ray.dir_x * hit.hit.Ng_x + hit.ray.dir_y * hit.hit.Ng_y + hit.ray.dir_z * hit.hit.Ng_z < 0.0f;
+}
+
+// Rays go to Embree in groups of this many through its stream interface: on the Cornell box's hemisphere
+// rays, rtcOccluded1M ran at about 1.7x the rate of one rtcOccluded1 call per ray, and rtcIntersect1M as
+// fast as rtcIntersect1 (bench_form_factors.cpp). The coherent-ray flag made both 2-3x slower on them.
+constexpr std::size_t kStreamSize = 64;
+
+void to_embree(const Ray& in, RTCRay& out) {
+    out.org_x = in.origin.x;
+    out.org_y = in.origin.y;
+    out.org_z = in.origin.z;
+    out.tnear = in.tnear;
+    out.dir_x = in.direction.x;
+    out.dir_y = in.direction.y;
+    out.dir_z = in.direction.z;
+    out.time = 0.0f;
+    out.tfar = in.tfar;
+    out.mask = 0xffffffffu;
+    out.id = 0;
+    out.flags = 0;
+}
+
+}  // namespace
+
+struct RayScene::Embree {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    std::atomic<bool> failed{false};
+    std::mutex mutex;
+    std::string message;
+
+    // Embree calls this from whichever thread hit the error; C code cannot carry an exception, so the first
+    // message is kept and thrown by throw_if_failed() on our side of the call.
+    static void on_error(void* self, RTCError code, const char* text) {
+        auto& embree = *static_cast<Embree*>(self);
+        std::lock_guard lock(embree.mutex);
+        if (embree.failed) return;
+        embree.message = std::string("Embree: ") + error_name(code) + (text ? std::string(": ") + text : "");
+        embree.failed = true;
+    }
+
+    void throw_if_failed() {
+        if (!failed) return;
+        std::lock_guard lock(mutex);
+        throw std::runtime_error(message);
+    }
+
+    ~Embree() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+RayScene::RayScene(const PatchMesh& patches, const char* device_config)
+    : embree_(std::make_unique<Embree>()) {
+    // Embree reads the last vertex with a 16-byte load, so the shared buffer needs one spare float3.
+    if (patches.positions.capacity() < patches.positions.size() + 1) {
+        throw std::invalid_argument("RayScene: PatchMesh::positions needs capacity for one more vertex");
+    }
+    Embree& e = *embree_;
+    e.device = rtcNewDevice(device_config);
+    if (!e.device) {
+        throw std::runtime_error(std::string("Embree: cannot create a device: ") +
+                                 error_name(rtcGetDeviceError(nullptr)));
+    }
+    rtcSetDeviceErrorFunction(e.device, &Embree::on_error, &e);
+    e.scene = rtcNewScene(e.device);
+    e.throw_if_failed();
+    rtcSetSceneBuildQuality(e.scene, RTC_BUILD_QUALITY_HIGH);
+
+    RTCGeometry quads = rtcNewGeometry(e.device, RTC_GEOMETRY_TYPE_QUAD);
+    e.throw_if_failed();
+    rtcSetSharedGeometryBuffer(quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, patches.positions.data(),
+                               0, sizeof(glm::vec3), patches.positions.size());
+    rtcSetSharedGeometryBuffer(quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, patches.corners.data(), 0,
+                               sizeof(glm::uvec4), patches.corners.size());
+    rtcCommitGeometry(quads);
+    rtcAttachGeometry(e.scene, quads);  // geometry ID 0: primID is the patch index
+    rtcReleaseGeometry(quads);
+    rtcCommitScene(e.scene);
+    e.throw_if_failed();
+}
+
+RayScene::~RayScene() = default;
+
+void RayScene::occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const {
+    if (blocked.size() < rays.size())
+        throw std::invalid_argument("RayScene::occluded: result span too small");
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    std::array<RTCRay, kStreamSize> stream;
+    for (std::size_t first = 0; first < rays.size(); first += kStreamSize) {
+        const std::size_t count = std::min(kStreamSize, rays.size() - first);
+        for (std::size_t k = 0; k < count; ++k) to_embree(rays[first + k], stream[k]);
+        rtcOccluded1M(embree_->scene, &context, stream.data(), static_cast<unsigned>(count), sizeof(RTCRay));
+        // Embree marks an occluded ray by setting its tfar to -inf.
+        for (std::size_t k = 0; k < count; ++k) blocked[first + k] = stream[k].tfar < 0.0f ? 1 : 0;
+    }
+    embree_->throw_if_failed();
+}
+
+void RayScene::intersect(std::span<const Ray> rays, std::span<RayHit> hits) const {
+    if (hits.size() < rays.size()) throw std::invalid_argument("RayScene::intersect: result span too small");
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    std::array<RTCRayHit, kStreamSize> stream;
+    for (std::size_t first = 0; first < rays.size(); first += kStreamSize) {
+        const std::size_t count = std::min(kStreamSize, rays.size() - first);
+        for (std::size_t k = 0; k < count; ++k) {
+            to_embree(rays[first + k], stream[k].ray);
+            stream[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            stream[k].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rtcIntersect1M(embree_->scene, &context, stream.data(), static_cast<unsigned>(count),
+                       sizeof(RTCRayHit));
+        for (std::size_t k = 0; k < count; ++k) {
+            const RTCRayHit& h = stream[k];
+            RayHit& out = hits[first + k];
+            out.t = h.ray.tfar;
+            if (h.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+                out.patch = RayHit::kMissed;
+            } else {
+                out.patch = reaches_front(h) ? h.hit.primID : RayHit::kBackFace;
+            }
+        }
+    }
+    embree_->throw_if_failed();
+}
+
+}  // namespace rad

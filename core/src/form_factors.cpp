@@ -1,0 +1,77 @@
+#include "rad/form_factors.hpp"
+
+#include <chrono>
+#include <limits>
+
+#include "form_factors_analytic.hpp"
+#include "form_factors_diagnostics.hpp"
+#include "form_factors_hemisphere.hpp"
+#include "form_factors_memory.hpp"
+#include "form_factors_rows.hpp"
+#include "rad/embree_scene.hpp"
+#include "rad/error.hpp"
+
+namespace rad {
+
+namespace {
+
+int rays_for(const FormFactorOptions& options) {
+    if (options.rays < 0) throw InputError("--rays: must be a positive number of rays");
+    if (options.rays > 0) return options.rays;
+    return options.method == FormFactorMethod::hemisphere ? kDefaultHemisphereRays : kDefaultAnalyticRays;
+}
+
+void check_patch_count(const PatchMesh& patches) {
+    // Column indices are 32-bit and RayHit reserves the top two values.
+    if (patches.size() >= std::numeric_limits<std::uint32_t>::max() - 2) {
+        throw InputError("form factors: too many patches (" + std::to_string(patches.size()) +
+                         "); use a larger --patch-size");
+    }
+}
+
+void fill_report(FormFactorReport& report, const FormFactorMatrix& matrix,
+                 const FormFactorDiagnostics& final_d, const RowStats& stats) {
+    report.memory_bytes = matrix.memory_bytes();
+    report.nonzeros = matrix.nonzeros();
+    report.rays = stats.rays;
+    report.escaped_ray_fraction =
+        stats.rays > 0 ? static_cast<double>(stats.escaped_rays) / static_cast<double>(stats.rays) : 0.0;
+    report.max_reciprocity_error = final_d.max_reciprocity_error;
+    report.mean_reciprocity_error = final_d.mean_reciprocity_error;
+    report.min_row_sum = final_d.min_row_sum;
+    report.max_row_sum = final_d.max_row_sum;
+}
+
+}  // namespace
+
+FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactorOptions& options,
+                                      FormFactorReport* report, Progress* progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const int rays = rays_for(options);
+    check_patch_count(patches);
+    check_memory_budget(patches, options, rays);
+
+    if (progress) progress->begin("form factors", patches.size());
+    RowStats stats;
+    FormFactorMatrix matrix;
+    if (patches.size() > 0) {
+        const RayScene scene(patches);
+        const RowFunction row = options.method == FormFactorMethod::hemisphere
+                                    ? hemisphere_rows(patches, scene, rays, options.seed)
+                                    : analytic_rows(patches, scene, rays, options.seed);
+        matrix = assemble_rows(patches.size(), row, stats, progress);
+    }
+
+    const FormFactorDiagnostics estimate = diagnose(matrix, patches);
+    if (options.enforce_reciprocity) matrix = enforce_reciprocity(matrix, patches);
+    if (options.normalize_rows) normalize_rows(matrix);
+    if (report) {
+        report->estimate = estimate;
+        const bool changed = options.enforce_reciprocity || options.normalize_rows;
+        fill_report(*report, matrix, changed ? diagnose(matrix, patches) : estimate, stats);
+        report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    return matrix;
+}
+
+}  // namespace rad

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <cstdint>
+
+#include "form_factors_quadrature.hpp"
+#include "form_factors_rows.hpp"
+#include "rad/embree_scene.hpp"
+#include "rad/patches.hpp"
+
+namespace rad {
+
+// Shadow rays per pair of patches when FormFactorOptions::rays is 0: a 4 x 4 stratified pairing.
+inline constexpr int kDefaultAnalyticRays = 16;
+
+// F_ij = V_ij (1/A_i) ∫_Qi F(x -> Rj) dA(x), where Rj is patch j clipped to the front of patch i's plane, Qi
+// is patch i clipped to the front of patch j's plane, F(x -> Rj) is Lambert's point-to-polygon factor,
+// integrated adaptively, and V_ij is the share of `rays` shadow rays between Qi and Rj that nothing blocks.
+// Those rays depend on the unordered pair only and always run from the lower index to the higher, so
+// V_ij = V_ji exactly and reciprocity errors come from the quadrature alone.
+RowFunction analytic_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
+                          const AdaptiveRule& rule = {});
+
+}  // namespace rad

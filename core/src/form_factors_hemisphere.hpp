@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "form_factors_rows.hpp"
+#include "rad/embree_scene.hpp"
+#include "rad/patches.hpp"
+
+namespace rad {
+
+// Rays per patch when FormFactorOptions::rays is 0. A patch's row is a Monte Carlo estimate: with 4096 rays
+// the factor from one unit square to another at distance 1 has a standard deviation of 1.8 % (1-4 % over
+// analytic.md's configurations), and what a radiosity solution sees, many patches together, is far better:
+// 8 x 8 patches per unit square are within 0.5 % (tests/test_form_factors_hemisphere.cpp).
+inline constexpr int kDefaultHemisphereRays = 4096;
+
+// Rays start this share of the scene's bounding-box diagonal off their patch, along its normal, so they do
+// not hit the patch they leave (Embree works in float: about 100 float steps at the scene's far corner).
+inline constexpr double kRayOffsetFraction = 1e-5;
+
+double ray_offset(const PatchMesh& patches);
+
+// The hemisphere estimator's rays for one patch: origins stratified over the patch (bilinear map for quads,
+// an area-uniform map for triangles) paired at random with stratified cosine-weighted directions. weights[k]
+// is the bilinear map's Jacobian at ray k over the patch's area (1 for parallelograms and triangles), which
+// makes the estimate exact in expectation for any quad. The rays depend only on (seed, patch).
+void hemisphere_rays(const PatchMesh& patches, std::uint32_t patch, std::uint64_t seed, double offset,
+                     std::span<Ray> rays, std::span<double> weights);
+
+// F_ij = (1/N) Σ_k weight_k [ray k first meets the front of patch j]. Rays that meet a back face first are
+// blocked and count for no patch; rays that meet nothing have escaped.
+RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed);
+
+}  // namespace rad

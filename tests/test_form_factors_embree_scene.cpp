@@ -1,0 +1,90 @@
+// The Embree interface: front and back faces, occlusion, misses, shared buffers and error routing.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "form_factor_test_scenes.hpp"
+#include "rad/embree_scene.hpp"
+
+namespace rad {
+namespace {
+
+// Surface 0 (patch 0) at y = 0 faces up; surface 1 (patch 1) at y = 1 faces down.
+PatchMesh two_squares() {
+    return test::mesh(test::parallel_rectangles(1, 1, 1), 1.0);
+}
+
+TEST(RayScene, RaysReachFrontFacesAndAreBlockedByBackFaces) {
+    const PatchMesh mesh = two_squares();
+    ASSERT_EQ(mesh.size(), 2u);
+    ASSERT_GT(mesh.patches[0].normal.y, 0.0);
+    const RayScene scene(mesh);
+    const std::vector<Ray> rays = {
+        {{0.5f, 0.5f, 0.5f}, 0.0f, {0, 1, 0}, 1e30f},   // up, onto the front of patch 1
+        {{0.5f, 0.5f, 0.5f}, 0.0f, {0, -1, 0}, 1e30f},  // down, onto the front of patch 0
+        {{0.5f, 2.0f, 0.5f}, 0.0f, {0, -1, 0}, 1e30f},  // from above, onto the back of patch 1
+        {{0.5f, -1.f, 0.5f}, 0.0f, {0, 1, 0}, 1e30f},   // from below, onto the back of patch 0
+        {{0.5f, 0.5f, 0.5f}, 0.0f, {1, 0, 0}, 1e30f},   // sideways, out of the scene
+    };
+    std::vector<RayHit> hits(rays.size());
+    scene.intersect(rays, hits);
+    EXPECT_EQ(hits[0].patch, 1u);
+    EXPECT_NEAR(hits[0].t, 0.5f, 1e-6f);
+    EXPECT_EQ(hits[1].patch, 0u);
+    EXPECT_EQ(hits[2].patch, RayHit::kBackFace);
+    EXPECT_NEAR(hits[2].t, 1.0f, 1e-6f);
+    EXPECT_EQ(hits[3].patch, RayHit::kBackFace);
+    EXPECT_EQ(hits[4].patch, RayHit::kMissed);
+}
+
+TEST(RayScene, OcclusionCountsBothSidesAndRespectsTheSegment) {
+    const PatchMesh mesh = two_squares();
+    const RayScene scene(mesh);
+    const std::vector<Ray> rays = {
+        {{0.5f, 2.0f, 0.5f}, 0.0f, {0, -1, 0}, 1e30f},  // meets the back of patch 1: blocked
+        {{0.5f, 0.5f, 0.5f}, 0.0f, {0, 1, 0}, 0.4f},    // stops short of patch 1
+        {{0.5f, 0.5f, 0.5f}, 0.0f, {0, 1, 0}, 0.6f},    // reaches patch 1
+        {{0.5f, 0.5f, 0.5f}, 0.0f, {1, 0, 0}, 1e30f},   // nothing in the way
+        {{0.5f, 0.5f, 0.5f}, 0.6f, {0, 1, 0}, 1e30f},   // starts past patch 1
+    };
+    std::vector<std::uint8_t> blocked(rays.size(), 7);
+    scene.occluded(rays, blocked);
+    EXPECT_EQ(blocked, (std::vector<std::uint8_t>{1, 0, 1, 0, 0}));
+}
+
+// Batches longer than Embree's stream of 64 rays, with a remainder, come back in order.
+TEST(RayScene, LongBatchesKeepTheirOrder) {
+    const PatchMesh mesh = two_squares();
+    const RayScene scene(mesh);
+    std::vector<Ray> rays;
+    for (int k = 0; k < 150; ++k) {
+        const float x = 0.1f + 0.8f * static_cast<float>(k) / 150.0f;
+        rays.push_back({{x, 0.5f, 0.5f}, 0.0f, {0, k % 3 == 0 ? 1.0f : -1.0f, 0}, 1e30f});
+    }
+    std::vector<RayHit> hits(rays.size());
+    scene.intersect(rays, hits);
+    for (int k = 0; k < 150; ++k) EXPECT_EQ(hits[k].patch, k % 3 == 0 ? 1u : 0u) << "ray " << k;
+}
+
+TEST(RayScene, NeedsTheSpareVertexForEmbreesWideLoads) {
+    PatchMesh mesh = two_squares();
+    mesh.positions.shrink_to_fit();
+    if (mesh.positions.capacity() > mesh.positions.size()) GTEST_SKIP() << "shrink_to_fit kept the capacity";
+    EXPECT_THROW(RayScene{mesh}, std::invalid_argument);
+}
+
+TEST(RayScene, EmbreeErrorsBecomeExceptionsWithEmbreesMessage) {
+    const PatchMesh mesh = two_squares();
+    try {
+        RayScene scene(mesh, "quad_accel=no_such_structure");
+        FAIL() << "Embree accepted an unknown acceleration structure";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("Embree: invalid argument"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("no_such_structure"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(RayScene(mesh, "threads=not_a_number"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace rad

@@ -1,0 +1,102 @@
+// The memory estimate stops a pass that would not fit, naming a --patch-size that does.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "form_factor_test_scenes.hpp"
+#include "form_factors_memory.hpp"
+#include "rad/builtin_scenes.hpp"
+#include "rad/error.hpp"
+#include "rad/form_factors.hpp"
+
+namespace rad {
+namespace {
+
+TEST(MemoryEstimate, BoundsWhatThePassAllocates) {
+    const PatchMesh mesh = test::mesh(make_cornell_box(), 100.0);
+    for (FormFactorMethod method : {FormFactorMethod::hemisphere, FormFactorMethod::analytic}) {
+        FormFactorOptions options;
+        options.method = method;
+        options.rays = 64;
+        const FormFactorMatrix f = compute_form_factors(mesh, options);
+        EXPECT_LE(f.memory_bytes(), form_factor_memory_estimate(mesh.size(), method, 64));
+    }
+    // n patches, at most min(rays, n) entries per row of 8 bytes, 8 bytes per row pointer, plus working
+    // memory.
+    EXPECT_GE(form_factor_memory_estimate(1000, FormFactorMethod::analytic, 16), 1000u * 1000u * 8u + 8008u);
+    EXPECT_GE(form_factor_memory_estimate(1000, FormFactorMethod::hemisphere, 100),
+              1000u * 100u * 8u + 8008u);
+    EXPECT_LT(form_factor_memory_estimate(1000, FormFactorMethod::hemisphere, 100), 1000u * 1000u * 8u);
+}
+
+TEST(MemoryBudget, OverBudgetNamesACoarserPatchSizeThatFits) {
+    const Scene cornell = make_cornell_box();
+    const double patch_size = 50.0;
+    const PatchMesh mesh = test::mesh(cornell, patch_size);
+    FormFactorOptions options;
+    options.method = FormFactorMethod::analytic;
+    options.patch_size = patch_size;
+    options.count_patches_at = [&cornell](double size) { return count_patches(cornell, size); };
+    options.max_memory_bytes = form_factor_memory_estimate(mesh.size() / 4, options.method, 16);
+    try {
+        compute_form_factors(mesh, options);
+        FAIL() << "no error for a budget of a sixteenth of the matrix";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("form factors need about"), std::string::npos) << message;
+        EXPECT_NE(message.find(std::to_string(mesh.size()) + " patches"), std::string::npos) << message;
+        EXPECT_NE(message.find("(--max-memory)"), std::string::npos) << message;
+        std::smatch match;
+        ASSERT_TRUE(std::regex_search(message, match, std::regex("use --patch-size ([0-9.]+) or larger")))
+            << message;
+        const double suggested = std::stod(match[1]);
+        EXPECT_GT(suggested, patch_size);
+        // The suggestion must really fit, and not be needlessly coarse.
+        const PatchMesh coarser = test::mesh(cornell, suggested);
+        EXPECT_LE(form_factor_memory_estimate(coarser.size(), options.method, 16), options.max_memory_bytes);
+        EXPECT_GT(coarser.size(), mesh.size() / 8);
+    }
+}
+
+// Without the scene's patch count the suggestion scales the longest patch edge by sqrt(patch ratio).
+TEST(MemoryBudget, WithoutTheSceneTheSuggestionScalesTheLongestEdge) {
+    const PatchMesh mesh = test::mesh(test::parallel_rectangles(1, 1, 1), 0.125);  // 2 x 64 patches
+    FormFactorOptions options;
+    options.method = FormFactorMethod::analytic;
+    options.max_memory_bytes = form_factor_memory_estimate(32, options.method, 16);
+    try {
+        compute_form_factors(mesh, options);
+        FAIL();
+    } catch (const InputError& e) {
+        // 128 patches to 32: twice the edge, with a 5 % margin.
+        EXPECT_NE(std::string(e.what()).find("use --patch-size 0.263 or larger"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(MemoryBudget, ABudgetTooSmallForOnePatchAsksForMore) {
+    const PatchMesh mesh = test::mesh(test::parallel_rectangles(1, 1, 1), 1.0);
+    FormFactorOptions options;
+    options.max_memory_bytes = 10;
+    try {
+        compute_form_factors(mesh, options);
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("raise --max-memory"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Options, NegativeRaysAreAnInputError) {
+    const PatchMesh mesh = test::mesh(test::parallel_rectangles(1, 1, 1), 1.0);
+    FormFactorOptions options;
+    options.rays = -1;
+    try {
+        compute_form_factors(mesh, options);
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--rays"), std::string::npos);
+    }
+}
+
+}  // namespace
+}  // namespace rad

@@ -1,0 +1,84 @@
+// Reciprocity A_i F_ij = A_j F_ji on the Cornell box, and the options that enforce it.
+#include <gtest/gtest.h>
+
+#include "form_factor_test_scenes.hpp"
+#include "rad/builtin_scenes.hpp"
+#include "rad/form_factors.hpp"
+
+namespace rad {
+namespace {
+
+// 356 patches: the blocks, the light and every wall, small enough for a sanitizer build.
+PatchMesh cornell_patches() {
+    return test::mesh(make_cornell_box(), 100.0);
+}
+
+double find(const FormFactorMatrix& f, std::uint32_t i, std::uint32_t j) {
+    for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k) {
+        if (f.column[k] == j) return f.value[k];
+    }
+    return 0.0;
+}
+
+TEST(Reciprocity, AnalyticEstimatorOnTheCornellBoxWithinTwoPercent) {
+    const PatchMesh mesh = cornell_patches();
+    FormFactorOptions options;
+    options.method = FormFactorMethod::analytic;
+    FormFactorReport report;
+    const FormFactorMatrix f = compute_form_factors(mesh, options, &report);
+    EXPECT_LT(report.max_reciprocity_error, 0.02);
+    EXPECT_GT(report.nonzeros, mesh.size() * 50);  // the check covered many pairs
+    // The report's figure is right: recompute the error of every stored pair by brute force.
+    double worst = 0.0;
+    for (std::uint32_t i = 0; i < mesh.size(); ++i) {
+        for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k) {
+            const std::uint32_t j = f.column[k];
+            const double forward = mesh.patches[i].area * f.value[k];
+            const double back = mesh.patches[j].area * find(f, j, i);
+            worst = std::max(worst, std::abs(forward - back) / std::max(forward, back));
+        }
+    }
+    EXPECT_DOUBLE_EQ(report.max_reciprocity_error, worst);
+}
+
+TEST(Reciprocity, RowsAreSortedAndHoldNoSelfFactor) {
+    const PatchMesh mesh = cornell_patches();
+    const FormFactorMatrix f = compute_form_factors(mesh, FormFactorOptions{});
+    ASSERT_EQ(f.rows(), mesh.size());
+    for (std::uint32_t i = 0; i < mesh.size(); ++i) {
+        for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k) {
+            EXPECT_NE(f.column[k], i);
+            EXPECT_GT(f.value[k], 0.0f);
+            if (k > f.row_begin[i]) {
+                EXPECT_LT(f.column[k - 1], f.column[k]);
+            }
+        }
+    }
+}
+
+TEST(Reciprocity, EnforcingItMakesEveryPairReciprocal) {
+    const PatchMesh mesh = cornell_patches();
+    FormFactorOptions options;  // hemisphere: single rays make many pairs one-sided
+    FormFactorReport raw;
+    compute_form_factors(mesh, options, &raw);
+    ASSERT_GT(raw.max_reciprocity_error, 0.5);
+
+    options.enforce_reciprocity = true;
+    FormFactorReport report;
+    const FormFactorMatrix f = compute_form_factors(mesh, options, &report);
+    EXPECT_LT(report.max_reciprocity_error, 1e-5);  // float rounding
+    EXPECT_EQ(report.estimate.max_reciprocity_error, raw.max_reciprocity_error);
+    // Energy is conserved: Σ A_i F_ij over the matrix does not change.
+    double before = 0.0, after = 0.0;
+    const FormFactorMatrix g = compute_form_factors(mesh, FormFactorOptions{});
+    for (std::uint32_t i = 0; i < mesh.size(); ++i) {
+        for (std::uint64_t k = g.row_begin[i]; k < g.row_begin[i + 1]; ++k)
+            before += mesh.patches[i].area * g.value[k];
+        for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k)
+            after += mesh.patches[i].area * f.value[k];
+    }
+    EXPECT_NEAR(after / before, 1.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace rad
