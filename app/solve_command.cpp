@@ -1,0 +1,126 @@
+// `radiosity solve [SCENE] --json FILE`: meshes the scene, computes the form factors, runs the chosen solver
+// to convergence (or its step limit), writes the per-patch results and statistics as JSON and prints a short
+// summary. Exit status 1 (after writing the file) when the system cannot converge.
+#include <sys/resource.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "progress_bar.hpp"
+#include "rad/error.hpp"
+#include "rad/solution_json.hpp"
+#include "radiosity_pipeline.hpp"
+
+namespace rad {
+
+namespace {
+
+struct SolveCommandOptions {
+    PipelineOptions pipeline;
+    std::string json_path;
+};
+
+std::size_t peak_memory_bytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+// Refuses a --json path whose folder does not exist before any long work is done.
+void check_output_folder(const std::string& path) {
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+        throw InputError("--json " + path + ": the folder " + folder.string() + " does not exist");
+    }
+}
+
+void print_summary(std::ostream& out, const LoadedScene& loaded, const SolveStatistics& stats,
+                   const FormFactorMatrix& form_factors) {
+    char line[512];
+    std::snprintf(line, sizeof line, "scene: %s, %zu patches (patch size %.6g)\n",
+                  loaded.scene.source.c_str(), loaded.patches.size(), loaded.patch_size);
+    out << line;
+    std::snprintf(line, sizeof line, "form factors: %zu nonzeros (%.1f MB), row sums %.4f .. %.4f\n",
+                  form_factors.nonzeros(), static_cast<double>(form_factors.memory_bytes()) / 1e6,
+                  stats.form_factors.min_row_sum, stats.form_factors.max_row_sum);
+    out << line;
+    std::snprintf(line, sizeof line, "solver: %s, %zu steps, relative residual %.3g (tolerance %.3g): %s\n",
+                  stats.solver.c_str(), stats.iterations, stats.residual, stats.tolerance,
+                  stats.status.c_str());
+    out << line;
+    std::snprintf(line, sizeof line,
+                  "seconds: mesh %.3f, form factors %.3f, solve %.3f; peak memory %.1f MB\n",
+                  stats.mesh_seconds, stats.form_factor_seconds, stats.solve_seconds,
+                  static_cast<double>(stats.peak_memory_bytes) / 1e6);
+    out << line;
+    const auto total = [](const glm::dvec3& v) { return v.x + v.y + v.z; };
+    std::snprintf(line, sizeof line, "power (sum of channels): emitted %.6g, absorbed %.6g, escaped %.6g\n",
+                  total(stats.energy.emitted), total(stats.energy.absorbed), total(stats.energy.escaped));
+    out << line;
+}
+
+SolveStatistics statistics(const RadiosityPipeline& pipeline) {
+    const Solver& solver = pipeline.solver();
+    const StepReport& report = solver.report();
+    SolveStatistics stats;
+    stats.solver = solver_method_name(pipeline.method());
+    stats.iterations = report.step;
+    stats.residual = report.residual;
+    stats.tolerance = pipeline.solver_options().tolerance;
+    stats.converged = report.converged();
+    stats.status = solver_status_name(report.status);
+    stats.status_message = solver.status_message();
+    stats.mesh_seconds = pipeline.seconds().mesh;
+    stats.form_factor_seconds = pipeline.seconds().form_factors;
+    stats.solve_seconds = pipeline.seconds().solve;
+    stats.energy = energy_balance(pipeline.system(), solver.solution());
+    stats.form_factors = pipeline.form_factor_report();
+    stats.peak_memory_bytes = peak_memory_bytes();
+    return stats;
+}
+
+int run_solve(const SolveCommandOptions& options) {
+    check_output_folder(options.json_path);
+    RadiosityPipeline pipeline(options.pipeline);
+    {
+        Progress progress;
+        const ProgressBar bar(progress);
+        pipeline.solve(&progress);
+    }
+    const SolveStatistics stats = statistics(pipeline);
+    const LoadedScene& loaded = pipeline.loaded();
+    write_solution_json(options.json_path, loaded.scene, loaded.patches, pipeline.system(),
+                        pipeline.solver().solution(), stats);
+
+    print_summary(std::cout, loaded, stats, pipeline.system().form_factors);
+    std::cout << "wrote " << options.json_path << '\n';
+    const SolverStatus status = pipeline.solver().report().status;
+    if (status == SolverStatus::iteration_limit) {
+        std::cerr << "radiosity: warning: " << stats.status_message << '\n';
+    }
+    if (status == SolverStatus::diverged || status == SolverStatus::not_converging) {
+        std::cerr << "radiosity: failed: the solver " << stats.status << ": " << stats.status_message << '\n';
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+CommandRunner add_solve_command(CLI::App& app) {
+    auto options = std::make_shared<SolveCommandOptions>();
+    CLI::App* solve =
+        app.add_subcommand("solve", "Solve SCENE's radiosity and write per-patch results as JSON");
+    add_pipeline_options(*solve, options->pipeline);
+    solve->add_option("--json", options->json_path, "Where to write the per-patch results and statistics")
+        ->required();
+    return [solve, options]() -> int {
+        if (!*solve) return -1;
+        return run_solve(*options);
+    };
+}
+
+}  // namespace rad

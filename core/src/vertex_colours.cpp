@@ -1,0 +1,175 @@
+#include "rad/vertex_colours.hpp"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <stdexcept>
+
+namespace rad {
+
+namespace {
+
+// The patches touching each corner point, as compressed rows: point p's are [begin[p], begin[p + 1]).
+struct PointPatches {
+    std::vector<std::uint32_t> begin;
+    std::vector<std::uint32_t> patch;
+};
+
+PointPatches patches_at_points(const PatchMesh& mesh) {
+    PointPatches at;
+    at.begin.assign(mesh.points.size() + 1, 0);
+    for (std::size_t q = 0; q < mesh.size(); ++q) {
+        for (int k = 0; k < mesh.corner_count(q); ++k) ++at.begin[mesh.corners[q][k] + 1];
+    }
+    for (std::size_t p = 0; p < mesh.points.size(); ++p) at.begin[p + 1] += at.begin[p];
+    at.patch.resize(at.begin.back());
+    std::vector<std::uint32_t> next(at.begin.begin(), at.begin.end() - 1);
+    for (std::size_t q = 0; q < mesh.size(); ++q) {
+        for (int k = 0; k < mesh.corner_count(q); ++k)
+            at.patch[next[mesh.corners[q][k]]++] = static_cast<std::uint32_t>(q);
+    }
+    return at;
+}
+
+void add_triangles(const PatchMesh& mesh, std::size_t q, const std::uint32_t* vertex, DisplayMesh& display) {
+    const auto patch = static_cast<std::uint32_t>(q);
+    display.triangles.emplace_back(vertex[0], vertex[1], vertex[2]);
+    display.triangle_patch.push_back(patch);
+    if (!mesh.is_triangle(q)) {
+        display.triangles.emplace_back(vertex[0], vertex[2], vertex[3]);
+        display.triangle_patch.push_back(patch);
+    }
+}
+
+DisplayMesh build_flat(const PatchMesh& mesh) {
+    DisplayMesh display;
+    for (std::size_t q = 0; q < mesh.size(); ++q) {
+        std::uint32_t vertex[4];
+        for (int k = 0; k < mesh.corner_count(q); ++k) {
+            vertex[k] = static_cast<std::uint32_t>(display.positions.size());
+            display.positions.push_back(mesh.positions[mesh.corners[q][k]]);
+            display.normals.emplace_back(mesh.patches[q].normal);
+            display.weight_patch.push_back(static_cast<std::uint32_t>(q));
+            display.weight.push_back(1.0f);
+            display.weight_begin.push_back(static_cast<std::uint32_t>(display.weight.size()));
+        }
+        add_triangles(mesh, q, vertex, display);
+    }
+    return display;
+}
+
+// The display vertices at one corner point: its patches grouped by surface and normal.
+class CornerSplitter {
+  public:
+    CornerSplitter(const PatchMesh& mesh, double cos_crease) : mesh_(mesh), cos_crease_(cos_crease) {}
+
+    // Groups the patches at `point` and appends one display vertex per group; returns each patch's vertex.
+    void split(std::uint32_t point, std::span<const std::uint32_t> patches, DisplayMesh& display,
+               std::vector<std::uint32_t>& vertex_of_patch) {
+        groups_.clear();
+        vertex_of_patch.resize(patches.size());
+        for (std::size_t a = 0; a < patches.size(); ++a) {
+            const Patch& patch = mesh_.patches[patches[a]];
+            std::size_t g = 0;
+            // Compare with each group's first patch, so a group cannot creep round a curve past the angle.
+            while (g < groups_.size() && !(groups_[g].surface == patch.surface &&
+                                           glm::dot(groups_[g].normal, patch.normal) >= cos_crease_)) {
+                ++g;
+            }
+            if (g == groups_.size()) groups_.push_back({patch.surface, patch.normal, {}});
+            groups_[g].members.push_back(a);
+        }
+        for (const Group& group : groups_) add_vertex(point, patches, group, display, vertex_of_patch);
+    }
+
+  private:
+    struct Group {
+        std::uint32_t surface;
+        glm::dvec3 normal;
+        std::vector<std::size_t> members;  // indices into the point's patches
+    };
+
+    void add_vertex(std::uint32_t point, std::span<const std::uint32_t> patches, const Group& group,
+                    DisplayMesh& display, std::vector<std::uint32_t>& vertex_of_patch) const {
+        const auto vertex = static_cast<std::uint32_t>(display.positions.size());
+        double area = 0.0;
+        glm::dvec3 normal(0.0);
+        for (std::size_t a : group.members) {
+            const Patch& patch = mesh_.patches[patches[a]];
+            area += patch.area;
+            normal += patch.area * patch.normal;
+        }
+        for (std::size_t a : group.members) {
+            display.weight_patch.push_back(patches[a]);
+            display.weight.push_back(static_cast<float>(mesh_.patches[patches[a]].area / area));
+            vertex_of_patch[a] = vertex;
+        }
+        display.weight_begin.push_back(static_cast<std::uint32_t>(display.weight.size()));
+        display.positions.push_back(mesh_.positions[point]);
+        display.normals.emplace_back(glm::length(normal) > 0.0 ? glm::normalize(normal) : group.normal);
+    }
+
+    const PatchMesh& mesh_;
+    double cos_crease_;
+    std::vector<Group> groups_;
+};
+
+DisplayMesh build_smooth(const PatchMesh& mesh, double crease_angle_degrees) {
+    const PointPatches at = patches_at_points(mesh);
+    DisplayMesh display;
+    // The display vertex of each (patch, corner).
+    std::vector<std::uint32_t> corner_vertex(4 * mesh.size());
+    CornerSplitter splitter(mesh, std::cos(crease_angle_degrees * std::numbers::pi / 180.0));
+    std::vector<std::uint32_t> vertex_of_patch;
+    for (std::uint32_t p = 0; p < mesh.points.size(); ++p) {
+        const std::span<const std::uint32_t> patches(at.patch.data() + at.begin[p],
+                                                     at.begin[p + 1] - at.begin[p]);
+        splitter.split(p, patches, display, vertex_of_patch);
+        for (std::size_t a = 0; a < patches.size(); ++a) {
+            const std::uint32_t q = patches[a];
+            for (int k = 0; k < 4; ++k) {
+                if (mesh.corners[q][k] == p) corner_vertex[4 * q + k] = vertex_of_patch[a];
+            }
+        }
+    }
+    for (std::size_t q = 0; q < mesh.size(); ++q) add_triangles(mesh, q, &corner_vertex[4 * q], display);
+    return display;
+}
+
+}  // namespace
+
+DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& options) {
+    if (!(options.crease_angle_degrees >= 0.0 && options.crease_angle_degrees <= 180.0)) {
+        throw std::invalid_argument("crease angle must lie in [0°, 180°]");
+    }
+    DisplayMesh display = options.mode == ColourMode::flat
+                              ? build_flat(patches)
+                              : build_smooth(patches, options.crease_angle_degrees);
+    display.patch_count = patches.size();
+    return display;
+}
+
+void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
+                     std::span<glm::vec3> radiance) {
+    if (radiance.size() != display.vertex_count()) {
+        throw std::invalid_argument("vertex_radiance: the output does not have one entry per vertex");
+    }
+    if (radiosity.size() != display.patch_count) {
+        throw std::invalid_argument("vertex_radiance: the radiosity does not have one entry per patch");
+    }
+    for (std::size_t v = 0; v < display.vertex_count(); ++v) {
+        glm::dvec3 sum(0.0);
+        for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
+            sum += static_cast<double>(display.weight[k]) * radiosity[display.weight_patch[k]];
+        }
+        radiance[v] = glm::vec3(sum / std::numbers::pi);
+    }
+}
+
+std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity) {
+    std::vector<glm::vec3> radiance(display.vertex_count());
+    vertex_radiance(display, radiosity, radiance);
+    return radiance;
+}
+
+}  // namespace rad

@@ -1,0 +1,144 @@
+// `radiosity solve`: the JSON it writes (DESIGN.md's schema, emission = π Ke, values that conserve power),
+// the summary it prints, and exit status 2 with the option named for bad input, leaving no file behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "test_support.hpp"
+
+namespace rad {
+namespace {
+
+using nlohmann::json;
+using test::run_radiosity;
+
+json read_json(const std::string& path) {
+    std::ifstream in(path);
+    return json::parse(in);
+}
+
+std::array<double, 3> rgb(const json& v) {
+    return {v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>()};
+}
+
+TEST(SolveCommand, WritesTheDesignSchemaForTheCube) {
+    test::TempDir dir;
+    const std::string out = (dir.path() / "cube.json").string();
+    const auto result = run_radiosity({"solve", "builtin:cube", "--patch-size", "0.5", "--solver",
+                                       "gauss-seidel", "--tol", "1e-9", "--json", out});
+    ASSERT_EQ(result.status, 0) << result.err;
+    for (const char* word : {"24 patches", "nonzeros", "steps", "residual", "seconds", "converged"}) {
+        EXPECT_NE(result.out.find(word), std::string::npos) << word << " missing from:\n" << result.out;
+    }
+    const json doc = read_json(out);
+    const json& patches = doc.at("patches");
+    ASSERT_EQ(patches.size(), 24u);
+    double area = 0.0, emitted = 0.0, leaving = 0.0;
+    for (const json& p : patches) {
+        for (const char* key :
+             {"surface", "material", "area", "centroid", "normal", "reflectance", "emission", "radiosity"}) {
+            ASSERT_TRUE(p.contains(key)) << key;
+        }
+        const double a = p.at("area").get<double>();
+        const auto e = rgb(p.at("emission"));
+        const auto b = rgb(p.at("radiosity"));
+        const auto l = rgb(p.at("radiance"));
+        // builtin:cube: the top emits Le = 1/π, so E = π Le = 1; every face reflects 0.5.
+        const double expected_e = p.at("surface") == "top" ? 1.0 : 0.0;
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_DOUBLE_EQ(e[c], expected_e);
+            EXPECT_DOUBLE_EQ(rgb(p.at("reflectance"))[c], 0.5);
+            EXPECT_GT(b[c], e[c]);
+            EXPECT_NEAR(l[c], b[c] / std::numbers::pi, 1e-15);
+        }
+        EXPECT_EQ(p.at("material") == "emitter", p.at("surface") == "top");
+        EXPECT_DOUBLE_EQ(a, 0.25);
+        area += a;
+        emitted += a * e[0];
+        leaving += a * b[0];
+    }
+    EXPECT_NEAR(area, 6.0, 1e-12);
+    EXPECT_NEAR(emitted, 1.0, 1e-12);
+    // Closed, uniform ρ: Σ A B = Σ A E / (1 − ρ), to within the sampled form factors' reciprocity error.
+    EXPECT_NEAR(leaving, 2.0, 5e-3);
+
+    const json& stats = doc.at("stats");
+    EXPECT_EQ(stats.at("patches").get<int>(), 24);
+    EXPECT_EQ(stats.at("nonzeros").get<int>(),
+              24 * 20);  // each patch sees every patch of the other five faces
+    EXPECT_GT(stats.at("iterations").get<int>(), 3);
+    EXPECT_LE(stats.at("residual").get<double>(), 1e-9);
+    EXPECT_TRUE(stats.at("converged").get<bool>());
+    EXPECT_EQ(stats.at("status"), "converged");
+    EXPECT_EQ(stats.at("solver"), "gauss-seidel");
+    for (const char* key : {"mesh", "form_factors", "solve"})
+        EXPECT_GE(stats.at("seconds").at(key).get<double>(), 0.0);
+    EXPECT_GT(stats.at("peak_memory_bytes").get<double>(), 1e6);
+    EXPECT_NEAR(rgb(stats.at("energy").at("emitted"))[1], 1.0, 1e-12);
+    EXPECT_NEAR(rgb(stats.at("energy").at("absorbed"))[1], 1.0, 5e-3);
+    // Nothing but the result is left in the folder.
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);
+}
+
+TEST(SolveCommand, CornellEmissionIsPiTimesKe) {
+    test::TempDir dir;
+    const std::string out = (dir.path() / "cornell.json").string();
+    const auto result = run_radiosity({"solve", "--patch-size", "150", "--solver", "cg", "--json", out});
+    ASSERT_EQ(result.status, 0) << result.err;
+    std::size_t lights = 0;
+    const json doc = read_json(out);
+    for (const json& p : doc.at("patches")) {
+        if (p.at("material") != "light") continue;
+        ++lights;
+        const auto e = rgb(p.at("emission"));
+        EXPECT_DOUBLE_EQ(e[0], 17.0 * std::numbers::pi);
+        EXPECT_DOUBLE_EQ(e[1], 12.0 * std::numbers::pi);
+        EXPECT_DOUBLE_EQ(e[2], 4.0 * std::numbers::pi);
+    }
+    EXPECT_GT(lights, 0u);
+}
+
+TEST(SolveCommand, StepLimitIsReportedNotHidden) {
+    test::TempDir dir;
+    const std::string out = (dir.path() / "two.json").string();
+    const auto result = run_radiosity(
+        {"solve", "builtin:cube", "--patch-size", "1", "--bounces", "2", "--tol", "0", "--json", out});
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.err.find("step limit"), std::string::npos) << result.err;
+    const json stats = read_json(out).at("stats");
+    EXPECT_FALSE(stats.at("converged").get<bool>());
+    EXPECT_EQ(stats.at("status"), "iteration limit");
+    EXPECT_EQ(stats.at("iterations").get<int>(), 2);
+}
+
+TEST(SolveCommand, BadOptionsExitTwoNamingTheOptionAndWriteNothing) {
+    test::TempDir dir;
+    const std::string out = (dir.path() / "x.json").string();
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"--solver", "newton"}, "--solver"}, {{"--tol", "-1"}, "--tol"},
+        {{"--sor", "2.5"}, "--sor"},          {{"--bounces", "0"}, "--bounces"},
+        {{"--initial", "zero"}, "--initial"}, {{"--patch-size", "-3"}, "--patch-size"},
+    };
+    for (const auto& [extra, option] : cases) {
+        std::vector<std::string> args = {"solve", "builtin:cube", "--json", out};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const auto result = run_radiosity(args);
+        EXPECT_EQ(result.status, 2) << option << ": " << result.err;
+        EXPECT_NE(result.err.find(option), std::string::npos) << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    }
+    const auto missing_json = run_radiosity({"solve", "builtin:cube"});
+    EXPECT_EQ(missing_json.status, 2);
+    EXPECT_NE(missing_json.err.find("--json"), std::string::npos) << missing_json.err;
+    const auto no_folder =
+        run_radiosity({"solve", "builtin:cube", "--json", (dir.path() / "nope" / "x.json").string()});
+    EXPECT_EQ(no_folder.status, 2);
+    EXPECT_NE(no_folder.err.find("--json"), std::string::npos) << no_folder.err;
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+}  // namespace
+}  // namespace rad
