@@ -10,6 +10,8 @@ namespace rad {
 using CommandRunner = std::function<int()>;
 
 CommandRunner add_info_command(CLI::App& app);
+CommandRunner add_solve_command(CLI::App& app);
+CommandRunner add_render_command(CLI::App& app);
 CommandRunner add_view_command(CLI::App& app);  // also the default when no command is named
 
 }  // namespace rad

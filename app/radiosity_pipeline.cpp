@@ -1,0 +1,75 @@
+#include "radiosity_pipeline.hpp"
+
+#include <chrono>
+
+#include "form_factor_options.hpp"
+
+namespace rad {
+
+namespace {
+
+class Stopwatch {
+public:
+    double seconds() const {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+void add_pipeline_options(CLI::App& command, PipelineOptions& options) {
+    add_scene_options(command, options.scene);
+    add_form_factor_options(command, options.form_factors);
+    add_solver_options(command, options.solver);
+}
+
+RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(options) {
+    method_ = solver_method(options.solver);
+    check_solver_options(rad::solver_options(options.solver, 1));  // bad options fail before the long work
+    const Stopwatch clock;
+    loaded_ = load_and_mesh(options.scene);
+    display_ = build_display_mesh(loaded_.patches, options.display);
+    seconds_.mesh = clock.seconds();
+    solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
+}
+
+void RadiosityPipeline::prepare(Progress* progress) {
+    if (solver_) return;
+    const Stopwatch clock;
+    FormFactorMatrix form_factors = compute_form_factors(
+        loaded_.patches, form_factor_options_for(options_.form_factors, loaded_), &form_factor_report_, progress);
+    ++work_.form_factor_passes;
+    seconds_.form_factors = clock.seconds();
+    system_.emplace(make_radiosity_system(loaded_.scene, loaded_.patches, std::move(form_factors)));
+    solver_ = make_solver(method_, *system_, solver_options_);
+}
+
+StepReport RadiosityPipeline::step() {
+    prepare();
+    const Stopwatch clock;
+    const StepReport report = solver_->step();
+    ++work_.solver_steps;
+    seconds_.solve += clock.seconds();
+    return report;
+}
+
+const StepReport& RadiosityPipeline::solve(Progress* progress) {
+    prepare(progress);
+    if (progress) progress->begin("solving", solver_options_.max_steps);
+    while (!solver_->report().finished()) {
+        if (progress && progress->cancelled()) throw Cancelled{};
+        step();
+        if (progress) progress->advance();
+    }
+    return solver_->report();
+}
+
+std::vector<glm::vec3> RadiosityPipeline::vertex_radiance() const {
+    if (!solver_) return std::vector<glm::vec3>(display_.vertex_count(), glm::vec3(0.0f));
+    return rad::vertex_radiance(display_, solver_->display_solution());
+}
+
+}  // namespace rad

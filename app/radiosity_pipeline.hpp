@@ -1,0 +1,81 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "rad/form_factors.hpp"
+#include "rad/progress.hpp"
+#include "rad/radiosity_system.hpp"
+#include "rad/solver.hpp"
+#include "rad/vertex_colours.hpp"
+#include "scene_options.hpp"
+#include "solver_options.hpp"
+
+namespace rad {
+
+// The options of every command that solves a scene (solve, render, view, bench), registered together.
+struct PipelineOptions {
+    SceneOptions scene;
+    FormFactorOptions form_factors;
+    SolverCommandOptions solver;
+    DisplayOptions display;
+};
+
+void add_pipeline_options(CLI::App& command, PipelineOptions& options);
+
+// How much work was done, so callers and tests can check that nothing runs twice.
+struct WorkCounts {
+    std::size_t form_factor_passes = 0;
+    std::size_t solver_steps = 0;
+};
+
+struct StageSeconds {
+    double mesh = 0.0;
+    double form_factors = 0.0;
+    double solve = 0.0;
+};
+
+// From a meshed scene to radiance per display vertex: form factors once, then the solver stepped by the
+// caller (or to the end), and the display mesh built once. The viewer steps it; the commands run it through.
+class RadiosityPipeline {
+public:
+    // Loads and meshes the scene. Throws InputError for bad input or options.
+    explicit RadiosityPipeline(const PipelineOptions& options);
+
+    // Runs the form-factor pass and makes the solver; does nothing the second time.
+    void prepare(Progress* progress = nullptr);
+    // One solver step (prepares first if needed).
+    StepReport step();
+    // Steps until the solver finishes (converged, limit, or cannot converge).
+    const StepReport& solve(Progress* progress = nullptr);
+
+    const LoadedScene& loaded() const { return loaded_; }
+    const DisplayMesh& display() const { return display_; }
+    const RadiositySystem& system() const { return *system_; }
+    const Solver& solver() const { return *solver_; }
+    const FormFactorReport& form_factor_report() const { return form_factor_report_; }
+    const SolverOptions& solver_options() const { return solver_options_; }
+    SolverMethod method() const { return method_; }
+
+    // Linear radiance L = B / π per display vertex for the solution as it stands (black before prepare).
+    std::vector<glm::vec3> vertex_radiance() const;
+
+    const WorkCounts& work() const { return work_; }
+    const StageSeconds& seconds() const { return seconds_; }
+
+private:
+    PipelineOptions options_;
+    LoadedScene loaded_;
+    DisplayMesh display_;
+    SolverMethod method_;
+    SolverOptions solver_options_;
+    std::optional<RadiositySystem> system_;
+    std::unique_ptr<Solver> solver_;
+    FormFactorReport form_factor_report_;
+    WorkCounts work_;
+    StageSeconds seconds_;
+};
+
+}  // namespace rad

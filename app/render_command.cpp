@@ -1,0 +1,161 @@
+// `radiosity render [SCENE] --out FILE`: solves the scene once and writes the image a camera sees, with no
+// window (EGL). .png gets exposure and the sRGB curve; .exr and .pfm hold linear radiance L = B / π.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "gl/headless_context.hpp"
+#include "gl/offscreen_target.hpp"
+#include "gl/renderer.hpp"
+#include "image_io.hpp"
+#include "rad/camera_view.hpp"
+#include "rad/display_outline.hpp"
+#include "rad/error.hpp"
+#include "radiosity_pipeline.hpp"
+
+namespace rad {
+
+namespace {
+
+struct RenderOptions {
+    PipelineOptions pipeline;
+    std::string out;
+    int width = 512;
+    int height = 512;
+    std::string camera;  // "ex,ey,ez,tx,ty,tz[,ux,uy,uz]"; empty: the scene's camera
+    double fov = 0.0;    // 0: the camera's own
+    double exposure = 0.0;
+    bool flat = false;
+    bool outline = false;
+};
+
+// Largest image side: 16384² float RGBA with 4 samples is already 4 GiB of framebuffer.
+constexpr int kMaxImageSide = 16384;
+
+glm::dvec3 vec(const std::vector<double>& v, std::size_t at) { return {v[at], v[at + 1], v[at + 2]}; }
+
+Camera parse_camera(const std::string& text, const Camera& fallback) {
+    std::vector<double> values;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        double value = 0.0;
+        std::size_t used = 0;
+        try {
+            value = std::stod(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != item.size() || !std::isfinite(value)) {
+            throw InputError("--camera: '" + item + "' is not a number (want ex,ey,ez,tx,ty,tz[,ux,uy,uz])");
+        }
+        values.push_back(value);
+    }
+    if (values.size() != 6 && values.size() != 9) {
+        throw InputError("--camera: " + std::to_string(values.size()) +
+                         " numbers; want 6 (eye, target) or 9 (eye, target, up)");
+    }
+    Camera camera = fallback;
+    camera.eye = vec(values, 0);
+    camera.target = vec(values, 3);
+    if (values.size() == 9) camera.up = vec(values, 6);
+    if (glm::length(camera.target - camera.eye) == 0.0) throw InputError("--camera: eye and target coincide");
+    if (glm::length(glm::cross(camera.target - camera.eye, camera.up)) == 0.0) {
+        throw InputError("--camera: the up vector is zero or points along the view direction");
+    }
+    return camera;
+}
+
+void check_output(const RenderOptions& options) {
+    std::string ext = std::filesystem::path(options.out).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png" && ext != ".exr" && ext != ".pfm") {
+        throw InputError("--out " + options.out + ": unknown image format '" + ext + "' (use .png, .exr or .pfm)");
+    }
+    const std::filesystem::path folder = std::filesystem::path(options.out).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+        throw InputError("--out " + options.out + ": the folder " + folder.string() + " does not exist");
+    }
+}
+
+RadianceImage draw_image(const RadiosityPipeline& pipeline, const Camera& camera, const RenderOptions& options,
+                         std::string& context_description) {
+    const HeadlessContext context;
+    context_description = context.description();
+    Renderer renderer;
+    const DisplayMesh& display = pipeline.display();
+    const auto* triangles = reinterpret_cast<const std::uint32_t*>(display.triangles.data());
+    const std::vector<std::uint32_t> outline = options.outline ? patch_outline(display) : std::vector<std::uint32_t>{};
+    renderer.upload_geometry(display.positions, {triangles, display.triangles.size() * 3}, outline);
+    renderer.update_colours(pipeline.vertex_radiance());
+    OffscreenTarget target(options.width, options.height);
+    target.bind();
+    const double aspect = double(options.width) / double(options.height);
+    DrawOptions draw;
+    draw.outline = options.outline;
+    renderer.draw(view_projection(camera, aspect, bounding_box(pipeline.loaded().scene)), draw);
+    return RadianceImage{options.width, options.height, target.read_pixels()};
+}
+
+int run_render(RenderOptions options) {
+    check_output(options);
+    options.pipeline.display.mode = options.flat ? ColourMode::flat : ColourMode::smooth;
+    RadiosityPipeline pipeline(options.pipeline);
+    Camera camera = scene_camera(pipeline.loaded().scene);
+    if (!options.camera.empty()) camera = parse_camera(options.camera, camera);
+    if (options.fov > 0.0) camera.fov_degrees = options.fov;
+
+    const StepReport& report = pipeline.solve();
+    if (report.status == SolverStatus::diverged || report.status == SolverStatus::not_converging) {
+        std::cerr << "radiosity: failed: the solver " << solver_status_name(report.status) << ": "
+                  << pipeline.solver().status_message() << '\n';
+        return 1;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    std::string context;
+    const RadianceImage image = draw_image(pipeline, camera, options, context);
+    const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    write_image(options.out, image, options.exposure);
+
+    const StageSeconds& s = pipeline.seconds();
+    std::printf("%zu patches, %s: %zu steps, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f, "
+                "render %.3f (%s)\n",
+                pipeline.loaded().patches.size(), std::string(solver_method_name(pipeline.method())).c_str(),
+                report.step, report.residual, s.mesh, s.form_factors, s.solve, render_seconds, context.c_str());
+    std::printf("wrote %s (%dx%d)\n", options.out.c_str(), options.width, options.height);
+    return 0;
+}
+
+}  // namespace
+
+CommandRunner add_render_command(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* render = app.add_subcommand("render", "Solve SCENE and write the image a camera sees (no window)");
+    add_pipeline_options(*render, options->pipeline);
+    render->add_option("--out", options->out, "Image to write: .png (exposure, sRGB), .exr or .pfm (linear radiance)")
+        ->required();
+    render->add_option("--width", options->width, "Image width in pixels")
+        ->check(CLI::Range(1, kMaxImageSide))
+        ->capture_default_str();
+    render->add_option("--height", options->height, "Image height in pixels")
+        ->check(CLI::Range(1, kMaxImageSide))
+        ->capture_default_str();
+    render->add_option("--camera", options->camera,
+                       "ex,ey,ez,tx,ty,tz[,ux,uy,uz]: eye, target and up (default: the scene's camera, or one "
+                       "that frames the scene)");
+    render->add_option("--fov", options->fov, "Vertical field of view in degrees (default: the camera's own)")
+        ->check(CLI::Range(1.0, 179.0));
+    render->add_option("--exposure", options->exposure, "PNG only: multiply radiance by 2^EXPOSURE before sRGB")
+        ->capture_default_str();
+    render->add_flag("--flat", options->flat, "Show each patch's own radiosity instead of interpolating");
+    render->add_flag("--outline", options->outline, "Draw the patches' edges");
+    return [render, options]() -> int {
+        if (!*render) return -1;
+        return run_render(*options);
+    };
+}
+
+}  // namespace rad
