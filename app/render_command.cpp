@@ -8,13 +8,10 @@
 
 #include "commands.hpp"
 #include "gl/headless_context.hpp"
-#include "gl/offscreen_target.hpp"
-#include "gl/renderer.hpp"
-#include "image_io.hpp"
 #include "rad/camera_view.hpp"
-#include "rad/display_outline.hpp"
 #include "rad/error.hpp"
 #include "radiosity_pipeline.hpp"
+#include "scene_image_renderer.hpp"
 
 namespace rad {
 
@@ -81,25 +78,6 @@ void check_output(const RenderOptions& options) {
     }
 }
 
-RadianceImage draw_image(const RadiosityPipeline& pipeline, const Camera& camera, const RenderOptions& options,
-                         std::string& context_description) {
-    const HeadlessContext context;
-    context_description = context.description();
-    Renderer renderer;
-    const DisplayMesh& display = pipeline.display();
-    const auto* triangles = reinterpret_cast<const std::uint32_t*>(display.triangles.data());
-    const std::vector<std::uint32_t> outline = options.outline ? patch_outline(display) : std::vector<std::uint32_t>{};
-    renderer.upload_geometry(display.positions, {triangles, display.triangles.size() * 3}, outline);
-    renderer.update_colours(pipeline.vertex_radiance());
-    OffscreenTarget target(options.width, options.height);
-    target.bind();
-    const double aspect = double(options.width) / double(options.height);
-    DrawOptions draw;
-    draw.outline = options.outline;
-    renderer.draw(view_projection(camera, aspect, bounding_box(pipeline.loaded().scene)), draw);
-    return RadianceImage{options.width, options.height, target.read_pixels()};
-}
-
 int run_render(RenderOptions options) {
     check_output(options);
     options.pipeline.display.mode = options.flat ? ColourMode::flat : ColourMode::smooth;
@@ -115,8 +93,9 @@ int run_render(RenderOptions options) {
         return 1;
     }
     const auto start = std::chrono::steady_clock::now();
-    std::string context;
-    const RadianceImage image = draw_image(pipeline, camera, options, context);
+    const HeadlessContext context;
+    const RadianceImage image =
+        SceneImageRenderer(pipeline, options.outline).render(camera, options.width, options.height);
     const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_image(options.out, image, options.exposure);
 
@@ -124,7 +103,7 @@ int run_render(RenderOptions options) {
     std::printf("%zu patches, %s: %zu steps, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f, "
                 "render %.3f (%s)\n",
                 pipeline.loaded().patches.size(), std::string(solver_method_name(pipeline.method())).c_str(),
-                report.step, report.residual, s.mesh, s.form_factors, s.solve, render_seconds, context.c_str());
+                report.step, report.residual, s.mesh, s.form_factors, s.solve, render_seconds, context.description().c_str());
     std::printf("wrote %s (%dx%d)\n", options.out.c_str(), options.width, options.height);
     return 0;
 }

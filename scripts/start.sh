@@ -1,8 +1,15 @@
 #!/usr/bin/env bash
 # The first command of the README: installs what is missing, builds, and runs the main job on the built-in
-# Cornell box. The interactive viewer is not there yet, so for now this prints the scene's summary.
+# Cornell box (or on the SCENE and options given). With a display it opens the viewer; without one it renders
+# a headless screenshot to out/ and prints where it is.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
-"${BUILD_DIR:-$root/build}/app/radiosity" "$@"
+radiosity="${BUILD_DIR:-$root/build}/app/radiosity"
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+  exec "$radiosity" "$@"
+fi
+mkdir -p "$root/out"
+echo "no display: rendering a headless screenshot instead of opening the viewer" >&2
+"$radiosity" render "$@" --out "$root/out/cornell.png"

@@ -24,15 +24,20 @@ void keep_for_review(const std::string& name, const std::string& actual_path, co
 GoldenResult compare_with_golden(const std::string& name, const std::string& actual_path,
                                  const GoldenTolerance& tolerance) {
     const std::filesystem::path golden_path = std::filesystem::path(RAD_GOLDEN_DIR) / (name + ".png");
+    return compare_with_image(name, golden_path.string(), actual_path, tolerance);
+}
+
+GoldenResult compare_with_image(const std::string& name, const std::string& golden_path,
+                                const std::string& actual_path, const GoldenTolerance& tolerance) {
     GoldenResult result;
     if (!std::filesystem::exists(golden_path)) {
         keep_for_review(name, actual_path, nullptr);
-        result.message = "no golden image " + golden_path.string() + "; the actual one is in " +
+        result.message = "no golden image " + golden_path + "; the actual one is in " +
                          (actual_folder() / (name + ".png")).string() +
                          ": review it and run scripts/promote-golden.sh";
         return result;
     }
-    const RadianceImage golden = read_image(golden_path.string());
+    const RadianceImage golden = read_image(golden_path);
     const RadianceImage actual = read_image(actual_path);
     if (golden.width != actual.width || golden.height != actual.height) {
         keep_for_review(name, actual_path, nullptr);

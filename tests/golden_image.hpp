@@ -25,4 +25,8 @@ struct GoldenResult {
 GoldenResult compare_with_golden(const std::string& name, const std::string& actual_path,
                                  const GoldenTolerance& tolerance = {});
 
+// The same against the golden image at `golden_path`; the review copies are still named after `name`.
+GoldenResult compare_with_image(const std::string& name, const std::string& golden_path,
+                                const std::string& actual_path, const GoldenTolerance& tolerance = {});
+
 }  // namespace rad::test

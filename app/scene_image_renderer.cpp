@@ -1,0 +1,33 @@
+#include "scene_image_renderer.hpp"
+
+#include "gl/offscreen_target.hpp"
+#include "rad/camera_view.hpp"
+#include "rad/display_outline.hpp"
+
+namespace rad {
+
+SceneImageRenderer::SceneImageRenderer(const RadiosityPipeline& pipeline, bool outline)
+    : pipeline_(pipeline), outline_(outline) {
+    const DisplayMesh& display = pipeline.display();
+    // glm::uvec3 is three packed uint32 indices, which is how OpenGL reads a triangle list.
+    static_assert(sizeof(glm::uvec3) == 3 * sizeof(std::uint32_t));
+    const std::span<const std::uint32_t> triangles(reinterpret_cast<const std::uint32_t*>(display.triangles.data()),
+                                                   display.triangles.size() * 3);
+    renderer_.upload_geometry(display.positions, triangles,
+                              outline ? patch_outline(display) : std::vector<std::uint32_t>{});
+    refresh_colours();
+}
+
+void SceneImageRenderer::refresh_colours() { renderer_.update_colours(pipeline_.vertex_radiance()); }
+
+RadianceImage SceneImageRenderer::render(const Camera& camera, int width, int height) const {
+    OffscreenTarget target(width, height);
+    target.bind();
+    DrawOptions draw;
+    draw.outline = outline_;
+    const double aspect = double(width) / double(height);
+    renderer_.draw(view_projection(camera, aspect, bounding_box(pipeline_.loaded().scene)), draw);
+    return RadianceImage{width, height, target.read_pixels()};
+}
+
+}  // namespace rad
