@@ -13,16 +13,11 @@
 #include <unistd.h>
 
 #include "rad/error.hpp"
+#include "rad/file_names.hpp"
 
 namespace rad {
 
 namespace {
-
-std::string lower_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
 
 void write_png(const std::string& path, const RadianceImage& image, double exposure) {
     const float scale = static_cast<float>(std::exp2(exposure));
@@ -95,14 +90,22 @@ float srgb_encode(float linear) {
     return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
-void write_image(const std::string& path, const RadianceImage& image, double exposure) {
-    const std::string ext = lower_extension(path);
+void check_image_path(const std::string& path) {
+    const std::string ext = lowercase_extension(path);
     if (ext != ".png" && ext != ".exr" && ext != ".pfm") {
         throw InputError("--out " + path + ": unknown image format '" + ext + "' (use .png, .exr or .pfm)");
     }
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+        throw InputError("--out " + path + ": the folder " + folder.string() + " does not exist");
+    }
+}
+
+void write_image(const std::string& path, const RadianceImage& image, double exposure) {
+    check_image_path(path);
+    const std::string ext = lowercase_extension(path);
     const std::filesystem::path target(path);
     const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
-    if (!std::filesystem::is_directory(folder)) throw InputError("--out " + path + ": no such folder");
     // The temporary keeps the extension: the writers do not care, but a person looking at the folder does.
     const std::string temporary = (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) +
                                              ".tmp" + ext))
@@ -120,7 +123,7 @@ void write_image(const std::string& path, const RadianceImage& image, double exp
 }
 
 RadianceImage read_image(const std::string& path) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = lowercase_extension(path);
     if (ext == ".pfm") return read_pfm(path);
     if (ext == ".png") return read_png(path);
     throw InputError(path + ": can only read .pfm and .png images");

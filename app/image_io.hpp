@@ -18,6 +18,9 @@ struct RadianceImage {
 // the same folder, then renamed). Throws InputError for an unknown extension or a folder we cannot write.
 void write_image(const std::string& path, const RadianceImage& image, double exposure = 0.0);
 
+// The checks write_image makes before writing, for callers that want to fail before long work.
+void check_image_path(const std::string& path);
+
 // Reads .pfm or .png back (PNG as its 8-bit sRGB values / 255, not linearized) for tests and tools.
 RadianceImage read_image(const std::string& path);
 

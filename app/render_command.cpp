@@ -1,13 +1,16 @@
 // `radiosity render [SCENE] --out FILE`: solves the scene once and writes the image a camera sees, with no
 // window (EGL). .png gets exposure and the sRGB curve; .exr and .pfm hold linear radiance L = B / π.
 #include <chrono>
-#include <filesystem>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "commands.hpp"
 #include "gl/headless_context.hpp"
+#include "image_io.hpp"
 #include "rad/camera_view.hpp"
 #include "rad/error.hpp"
 #include "radiosity_pipeline.hpp"
@@ -66,20 +69,8 @@ Camera parse_camera(const std::string& text, const Camera& fallback) {
     return camera;
 }
 
-void check_output(const RenderOptions& options) {
-    std::string ext = std::filesystem::path(options.out).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".png" && ext != ".exr" && ext != ".pfm") {
-        throw InputError("--out " + options.out + ": unknown image format '" + ext + "' (use .png, .exr or .pfm)");
-    }
-    const std::filesystem::path folder = std::filesystem::path(options.out).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-        throw InputError("--out " + options.out + ": the folder " + folder.string() + " does not exist");
-    }
-}
-
 int run_render(RenderOptions options) {
-    check_output(options);
+    check_image_path(options.out);
     options.pipeline.display.mode = options.flat ? ColourMode::flat : ColourMode::smooth;
     RadiosityPipeline pipeline(options.pipeline);
     Camera camera = scene_camera(pipeline.loaded().scene);
