@@ -67,6 +67,13 @@ const StepReport& RadiosityPipeline::solve(Progress* progress) {
     return solver_->report();
 }
 
+void RadiosityPipeline::restart_solver(SolverMethod method, const SolverOptions& options) {
+    prepare();
+    solver_ = make_solver(method, *system_, options);
+    method_ = method;
+    solver_options_ = options;
+}
+
 std::vector<glm::vec3> RadiosityPipeline::vertex_radiance() const {
     if (!solver_) return std::vector<glm::vec3>(display_.vertex_count(), glm::vec3(0.0f));
     return rad::vertex_radiance(display_, solver_->display_solution());

@@ -50,6 +50,9 @@ public:
     StepReport step();
     // Steps until the solver finishes (converged, limit, or cannot converge).
     const StepReport& solve(Progress* progress = nullptr);
+    // A fresh solver from B = E with this method and these options, keeping the form factors (prepares
+    // first if needed): the viewer's "reset to emission only" and its solver switch.
+    void restart_solver(SolverMethod method, const SolverOptions& options);
 
     const LoadedScene& loaded() const { return loaded_; }
     const DisplayMesh& display() const { return display_; }

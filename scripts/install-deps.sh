@@ -8,6 +8,7 @@ packages=(
   libtinyobjloader-dev libcli11-dev libeigen3-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libstb-dev libtinyexr-dev
+  libglfw3-dev libimgui-dev xvfb xauth
 )
 
 missing=()

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -26,11 +27,26 @@ std::string slurp(const std::filesystem::path& p) {
 }  // namespace
 
 CommandResult run_radiosity(const std::vector<std::string>& args) {
+    return run_program(RAD_BINARY, args);
+}
+
+std::string find_in_path(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    std::stringstream folders(path ? path : "/usr/local/bin:/usr/bin:/bin");
+    std::string folder;
+    while (std::getline(folders, folder, ':')) {
+        const std::filesystem::path candidate = std::filesystem::path(folder.empty() ? "." : folder) / name;
+        if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+    }
+    return {};
+}
+
+CommandResult run_program(const std::string& program, const std::vector<std::string>& args) {
     TempDir capture;
     const std::string out_path = (capture.path() / "stdout").string();
     const std::string err_path = (capture.path() / "stderr").string();
 
-    std::vector<std::string> argv_storage{RAD_BINARY};
+    std::vector<std::string> argv_storage{program};
     argv_storage.insert(argv_storage.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (auto& a : argv_storage) argv.push_back(a.data());
@@ -42,9 +58,9 @@ CommandResult run_radiosity(const std::vector<std::string>& args) {
     posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) throw std::runtime_error("cannot start " + std::string(RAD_BINARY));
+    if (spawned != 0) throw std::runtime_error("cannot start " + program);
 
     int wait_status = 0;
     waitpid(pid, &wait_status, 0);
@@ -74,6 +90,8 @@ std::string TempDir::write(const std::string& name, const std::string& text) con
     return p.string();
 }
 
-std::string data_path(const std::string& name) { return std::string(RAD_TEST_DATA_DIR) + "/" + name; }
+std::string data_path(const std::string& name) {
+    return std::string(RAD_TEST_DATA_DIR) + "/" + name;
+}
 
 }  // namespace rad::test

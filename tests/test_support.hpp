@@ -14,10 +14,14 @@ struct CommandResult {
 
 // Runs the radiosity binary with these arguments (no shell involved) and captures what it prints.
 CommandResult run_radiosity(const std::vector<std::string>& args);
+// Runs `program` (a path, or a name looked up in PATH) with these arguments, likewise.
+CommandResult run_program(const std::string& program, const std::vector<std::string>& args);
+// The full path of `name` found in PATH, or empty.
+std::string find_in_path(const std::string& name);
 
 // A fresh directory under the build tree's temp space, removed at the end of the test.
 class TempDir {
-public:
+  public:
     TempDir();
     ~TempDir();
     TempDir(const TempDir&) = delete;
@@ -27,7 +31,7 @@ public:
     // Writes `text` to name inside the directory and returns the full path.
     std::string write(const std::string& name, const std::string& text) const;
 
-private:
+  private:
     std::filesystem::path path_;
 };
 

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace rad {
+
+// What happened to the window since the last take_events(): collected by GLFW's callbacks, which Dear ImGui
+// chains after its own.
+struct WindowEvents {
+    double scroll = 0.0;               // wheel steps, up positive
+    std::vector<int> pressed_keys;     // GLFW key codes, in order
+    std::vector<std::string> dropped;  // paths of files dropped on the window
+};
+
+// The platform side of the viewer: GLFW, one window with an OpenGL 3.3 core context made current on the
+// calling thread, asked for an sRGB-capable framebuffer so it shows what `render` PNGs hold.
+class GlfwWindow {
+  public:
+    // Throws std::runtime_error (with GLFW's reason) when there is no display or no suitable context.
+    GlfwWindow(int width, int height, const std::string& title);
+    ~GlfwWindow();
+    GlfwWindow(const GlfwWindow&) = delete;
+    GlfwWindow& operator=(const GlfwWindow&) = delete;
+
+    GLFWwindow* handle() const { return window_; }
+    bool should_close() const;
+    void request_close();
+    void swap_buffers();
+    WindowEvents take_events();
+    // Whether the default framebuffer encodes sRGB (so GL_FRAMEBUFFER_SRGB applies the display curve).
+    bool srgb() const { return srgb_; }
+
+  private:
+    static void on_scroll(GLFWwindow* window, double dx, double dy);
+    static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+    static void on_drop(GLFWwindow* window, int count, const char** paths);
+
+    GLFWwindow* window_ = nullptr;
+    WindowEvents events_;
+    bool srgb_ = false;
+};
+
+}  // namespace rad

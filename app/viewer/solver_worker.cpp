@@ -1,0 +1,337 @@
+#include "viewer/solver_worker.hpp"
+
+#include <tbb/task_arena.h>
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include "rad/camera_view.hpp"
+#include "rad/display_outline.hpp"
+#include "rad/error.hpp"
+
+namespace rad {
+
+namespace {
+
+// Steps whose light alone the panel can show: Jacobi's light is mostly in its first dozens of bounces, and
+// each kept step costs a copy of the solution (and of the colours).
+constexpr std::size_t kKeptBounces = 64;
+
+// The work's parallel stages leave one core to the render thread (and to a software rasterizer such as
+// llvmpipe), so frames stay short while form factors run.
+int work_threads() {
+    return std::max(1, tbb::this_task_arena::max_concurrency() - 1);
+}
+
+float log10_or_floor(double value) {
+    return static_cast<float>(std::log10(std::max(value, 1e-30)));
+}
+
+std::vector<glm::dvec3> positive_difference(std::span<const glm::dvec3> now,
+                                            std::span<const glm::dvec3> before) {
+    std::vector<glm::dvec3> difference(now.begin(), now.end());
+    if (before.size() != now.size()) return difference;  // the first step: the emission itself
+    for (std::size_t i = 0; i < now.size(); ++i)
+        difference[i] = glm::max(now[i] - before[i], glm::dvec3(0.0));
+    return difference;
+}
+
+}  // namespace
+
+SolverWorker::SolverWorker(const PipelineOptions& options) : arena_(work_threads()) {
+    pending_rebuild_ = options;
+    thread_ = std::thread([this] { loop(); });
+}
+
+SolverWorker::~SolverWorker() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+        if (progress_) progress_->cancel();
+    }
+    wake_.notify_all();
+    thread_.join();
+}
+
+void SolverWorker::request_rebuild(const PipelineOptions& options) {
+    {
+        std::lock_guard lock(mutex_);
+        if (progress_) progress_->cancel();  // the old scene's form factors are no longer wanted
+        pending_rebuild_ = options;
+        running_ = false;
+    }
+    wake_.notify_all();
+}
+
+void SolverWorker::request_steps(std::size_t count) {
+    {
+        std::lock_guard lock(mutex_);
+        pending_steps_ += count;
+    }
+    wake_.notify_all();
+}
+
+void SolverWorker::set_running(bool running) {
+    {
+        std::lock_guard lock(mutex_);
+        running_ = running;
+    }
+    wake_.notify_all();
+}
+
+void SolverWorker::request_reset(const std::string& method, double tolerance) {
+    {
+        std::lock_guard lock(mutex_);
+        pending_reset_ = Reset{method, tolerance, true};
+        pending_steps_ = 0;
+        running_ = false;
+    }
+    wake_.notify_all();
+}
+
+void SolverWorker::request_colour_mode(ColourMode mode) {
+    {
+        std::lock_guard lock(mutex_);
+        pending_colour_mode_ = mode;
+    }
+    wake_.notify_all();
+}
+
+void SolverWorker::cancel() {
+    std::lock_guard lock(mutex_);
+    if (progress_) progress_->cancel();
+    pending_steps_ = 0;
+    running_ = false;
+}
+
+SolverSnapshot SolverWorker::snapshot() const {
+    std::lock_guard lock(mutex_);
+    return snapshot_;
+}
+
+std::shared_ptr<const Progress> SolverWorker::progress() const {
+    std::lock_guard lock(mutex_);
+    return progress_;
+}
+
+bool SolverWorker::busy() const {
+    std::lock_guard lock(mutex_);
+    return working_ || has_work();
+}
+
+bool SolverWorker::running() const {
+    std::lock_guard lock(mutex_);
+    return running_;
+}
+
+std::size_t SolverWorker::pending_steps() const {
+    std::lock_guard lock(mutex_);
+    return pending_steps_;
+}
+
+bool SolverWorker::has_work() const {
+    return pending_rebuild_ || pending_colour_mode_ || pending_reset_ ||
+           (can_step_ && (pending_steps_ > 0 || running_));
+}
+
+void SolverWorker::loop() {
+    for (;;) {
+        std::optional<PipelineOptions> rebuild_options;
+        std::optional<ColourMode> colour_mode;
+        std::optional<Reset> reset;
+        {
+            std::unique_lock lock(mutex_);
+            working_ = false;
+            wake_.wait(lock, [this] { return stop_ || has_work(); });
+            if (stop_) return;
+            working_ = true;
+            // Order matters: a new scene makes every other request moot; a display switch and a reset keep
+            // the steps asked for after them.
+            if (pending_rebuild_) {
+                rebuild_options = std::move(pending_rebuild_);
+                pending_rebuild_.reset();
+            } else if (pending_colour_mode_) {
+                colour_mode = pending_colour_mode_;
+                pending_colour_mode_.reset();
+            } else if (pending_reset_) {
+                reset = pending_reset_;
+                pending_reset_.reset();
+            } else if (pending_steps_ > 0) {
+                --pending_steps_;
+            }
+            progress_ = std::make_shared<Progress>();
+        }
+        try {
+            arena_.execute([&] {
+                if (rebuild_options) {
+                    rebuild(*rebuild_options);
+                } else if (colour_mode) {
+                    switch_colour_mode(*colour_mode);
+                } else if (reset) {
+                    reset_solver(*reset);
+                } else {
+                    take_step();
+                }
+            });
+        } catch (const Cancelled&) {
+            fail("cancelled; re-mesh or reset to compute again");
+        } catch (const InputError& e) {
+            fail(e.what(), true);
+        } catch (const std::exception& e) {
+            fail(std::string("failed: ") + e.what());
+        }
+        publish_statistics();
+        std::lock_guard lock(mutex_);
+        progress_.reset();
+    }
+}
+
+void SolverWorker::rebuild(const PipelineOptions& options) {
+    progress_->begin("loading and meshing", 0);
+    auto pipeline = std::make_unique<RadiosityPipeline>(options);
+    if (options.scene.scene != options_.scene.scene || !pipeline_) ++scene_version_;
+    const DisplayOptions display = options_.display;
+    const bool had_pipeline = pipeline_ != nullptr;
+    options_ = options;
+    if (had_pipeline) options_.display = display;  // a smooth/flat choice made since the start stays
+    pipeline_ = std::move(pipeline);
+    display_ = build_display_mesh(pipeline_->loaded().patches, options_.display);
+    start_bounce_history();
+    set_can_step(false);
+    publish(true, false);
+    {
+        std::lock_guard lock(mutex_);
+        snapshot_.error.clear();
+        snapshot_.bad_input = false;
+    }
+    publish_statistics();
+    pipeline_->prepare(progress_.get());
+    reset_solver(Reset{options_.solver.method, options_.solver.tolerance, false});
+}
+
+void SolverWorker::reset_solver(const Reset& reset) {
+    if (!pipeline_) return;
+    pipeline_->prepare(progress_.get());
+    options_.solver.method = reset.method;
+    options_.solver.tolerance = reset.tolerance;
+    SolverOptions solver_options = rad::solver_options(options_.solver, pipeline_->loaded().patches.size());
+    if (reset.from_emission) solver_options.initial = InitialGuess::emission;
+    pipeline_->restart_solver(solver_method(options_.solver), solver_options);
+    start_bounce_history();
+    add_bounce(pipeline_->solver().display_solution());  // step 0: the emission is the newest light
+    history_residual_.clear();
+    history_unshot_.clear();
+    set_can_step(!pipeline_->solver().report().finished());
+    publish(false, true);
+    std::lock_guard lock(mutex_);
+    snapshot_.error.clear();
+}
+
+void SolverWorker::take_step() {
+    if (!pipeline_ || !pipeline_->work().form_factor_passes) return;
+    const std::vector<glm::dvec3> before = pipeline_->solver().display_solution();
+    const StepReport report = pipeline_->step();
+    add_bounce(positive_difference(pipeline_->solver().display_solution(), before));
+    history_residual_.push_back(log10_or_floor(report.residual));
+    history_unshot_.push_back(
+        log10_or_floor(report.unshot_power.x + report.unshot_power.y + report.unshot_power.z));
+    if (report.finished()) {
+        std::lock_guard lock(mutex_);
+        running_ = false;
+        pending_steps_ = 0;
+    }
+    set_can_step(!report.finished());
+    publish(false, true);
+}
+
+void SolverWorker::switch_colour_mode(ColourMode mode) {
+    if (!pipeline_ || options_.display.mode == mode) return;
+    options_.display.mode = mode;
+    display_ = build_display_mesh(pipeline_->loaded().patches, options_.display);
+    for (std::size_t i = 0; i < bounce_history_.size(); ++i) {
+        vertex_bounces_[i] =
+            std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce_history_[i]));
+    }
+    publish(true, pipeline_->work().form_factor_passes > 0);
+}
+
+void SolverWorker::start_bounce_history() {
+    bounce_history_.clear();
+    vertex_bounces_.clear();
+    first_bounce_ = 0;
+}
+
+void SolverWorker::add_bounce(std::vector<glm::dvec3> bounce) {
+    vertex_bounces_.push_back(
+        std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce)));
+    bounce_history_.push_back(std::move(bounce));
+    if (bounce_history_.size() > kKeptBounces) {
+        bounce_history_.pop_front();
+        vertex_bounces_.pop_front();
+        ++first_bounce_;
+    }
+}
+
+void SolverWorker::set_can_step(bool can_step) {
+    std::lock_guard lock(mutex_);
+    can_step_ =
+        can_step;  // steps asked for before the solver exists wait for it (scripted runs rely on that)
+}
+
+void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
+    // Built before taking the lock, which the render thread takes every frame.
+    std::shared_ptr<ViewerGeometry> geometry;
+    if (geometry_changed) {
+        geometry = std::make_shared<ViewerGeometry>();
+        geometry->positions = display_.positions;
+        const auto* first = reinterpret_cast<const std::uint32_t*>(display_.triangles.data());
+        geometry->triangles.assign(first, first + display_.triangles.size() * 3);
+        geometry->outline = patch_outline(display_);
+        geometry->bounds = bounding_box(pipeline_->loaded().scene);
+        geometry->scene_camera = scene_camera(pipeline_->loaded().scene);
+        geometry->scene_version = scene_version_;
+    }
+    std::shared_ptr<ViewerRadiance> radiance;
+    if (with_radiance) {
+        radiance = std::make_shared<ViewerRadiance>();
+        radiance->cumulative = vertex_radiance(display_, pipeline_->solver().display_solution());
+        radiance->bounces.assign(vertex_bounces_.begin(), vertex_bounces_.end());
+        radiance->first_bounce = first_bounce_;
+        radiance->step = pipeline_->solver().report().step;
+    }
+    std::lock_guard lock(mutex_);
+    if (geometry) snapshot_.geometry = std::move(geometry);
+    snapshot_.radiance = std::move(radiance);
+}
+
+void SolverWorker::publish_statistics() {
+    ViewerStatistics statistics;
+    if (pipeline_) {
+        statistics.scene = options_.scene.scene;
+        statistics.patches = pipeline_->loaded().patches.size();
+        statistics.patch_size = pipeline_->loaded().patch_size;
+        statistics.seconds = pipeline_->seconds();
+        statistics.method = pipeline_->method();
+        statistics.prepared = pipeline_->work().form_factor_passes > 0;
+        statistics.form_factor_passes = pipeline_->work().form_factor_passes;
+        if (statistics.prepared) {
+            statistics.nonzeros = pipeline_->system().form_factors.nonzeros();
+            statistics.status = pipeline_->solver().report().status;
+            statistics.status_message = pipeline_->solver().status_message();
+        }
+        statistics.log_residual = history_residual_;
+        statistics.log_unshot = history_unshot_;
+    }
+    std::lock_guard lock(mutex_);
+    snapshot_.statistics = std::move(statistics);
+}
+
+void SolverWorker::fail(const std::string& message, bool bad_input) {
+    std::lock_guard lock(mutex_);
+    snapshot_.error = message;
+    snapshot_.bad_input = bad_input;
+    pending_steps_ = 0;
+    running_ = false;
+}
+
+}  // namespace rad

@@ -1,0 +1,105 @@
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <tbb/task_arena.h>
+
+#include "rad/progress.hpp"
+#include "rad/vertex_colours.hpp"
+#include "radiosity_pipeline.hpp"
+#include "viewer/solver_snapshot.hpp"
+
+namespace rad {
+
+// Runs the long work of the viewer (loading and meshing, form factors, solver steps) on its own thread, so
+// the render thread never waits for it. The render thread asks for work with the request functions, which
+// return at once, and reads results with snapshot(). Cancelling stops form factors through
+// Progress::cancel() and drops the steps not yet taken; the destructor cancels and joins.
+class SolverWorker {
+  public:
+    // Starts the thread, which loads `options`' scene and computes its form factors.
+    explicit SolverWorker(const PipelineOptions& options);
+    ~SolverWorker();
+    SolverWorker(const SolverWorker&) = delete;
+    SolverWorker& operator=(const SolverWorker&) = delete;
+
+    // Loads (another scene, or the same at another patch size or form-factor method) and recomputes.
+    void request_rebuild(const PipelineOptions& options);
+    void request_steps(std::size_t count);
+    // Steps until the solver finishes, or until paused.
+    void set_running(bool running);
+    // A fresh solver from B = E (emission only) with this method and tolerance; keeps the form factors.
+    void request_reset(const std::string& method, double tolerance);
+    void request_colour_mode(ColourMode mode);
+    // Stops what runs now (form factors, a run of steps) and drops the steps asked for and not yet taken.
+    void cancel();
+
+    SolverSnapshot snapshot() const;
+    // The stage and fraction of the work running now, when there is some.
+    std::shared_ptr<const Progress> progress() const;
+    bool busy() const;
+    bool running() const;
+    // Steps asked for and not yet taken.
+    std::size_t pending_steps() const;
+
+  private:
+    struct Reset {
+        std::string method;
+        double tolerance;
+        bool from_emission;  // B = E whatever --initial says (the panel's reset); else --initial's guess
+    };
+
+    void loop();
+    bool has_work() const;  // with mutex_ held
+    void rebuild(const PipelineOptions& options);
+    void reset_solver(const Reset& reset);
+    void take_step();
+    void switch_colour_mode(ColourMode mode);
+    void set_can_step(bool can_step);
+    void start_bounce_history();
+    void add_bounce(std::vector<glm::dvec3> bounce);
+    // Hands the display mesh (when it changed) and the colours (when the solver has some) to the render
+    // thread.
+    void publish(bool geometry_changed, bool with_radiance);
+    void publish_statistics();
+    void fail(const std::string& message, bool bad_input = false);
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    // Requests, guarded by mutex_.
+    std::optional<PipelineOptions> pending_rebuild_;
+    std::optional<Reset> pending_reset_;
+    std::optional<ColourMode> pending_colour_mode_;
+    std::size_t pending_steps_ = 0;
+    bool running_ = false;
+    bool stop_ = false;
+    bool working_ = false;
+    bool can_step_ = false;  // a solver exists and has not finished
+    std::shared_ptr<Progress> progress_;
+    SolverSnapshot snapshot_;
+
+    // The worker thread's own state.
+    PipelineOptions options_;
+    std::unique_ptr<RadiosityPipeline> pipeline_;
+    DisplayMesh display_;
+    // Per patch, what each of the last steps added (front: step first_bounce_), and the same per vertex.
+    std::deque<std::vector<glm::dvec3>> bounce_history_;
+    std::deque<ViewerRadiance::Colours> vertex_bounces_;
+    std::size_t first_bounce_ = 0;
+    std::vector<float> history_residual_;
+    std::vector<float> history_unshot_;
+    std::string scene_name_;
+    std::uint64_t scene_version_ = 0;
+    tbb::task_arena arena_;  // where the work's parallel stages run
+    std::thread thread_;     // last, so it starts after everything it uses exists
+};
+
+}  // namespace rad

@@ -1,0 +1,64 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gl/renderer.hpp"
+#include "rad/fly_camera.hpp"
+#include "viewer/camera_input.hpp"
+#include "viewer/frame_timer.hpp"
+#include "viewer/glfw_window.hpp"
+#include "viewer/imgui_layer.hpp"
+#include "viewer/solver_worker.hpp"
+#include "viewer/view_settings.hpp"
+#include "viewer/viewer_options.hpp"
+#include "viewer/viewer_panel.hpp"
+
+namespace rad {
+
+// The interactive viewer: one window, the renderer and the panel on this (the render) thread, the long work
+// on a SolverWorker. Each frame reads the worker's latest results and uploads only what changed.
+class Viewer {
+  public:
+    // Opens the window and starts loading the scene. Throws std::runtime_error when no window can be opened.
+    explicit Viewer(const ViewerOptions& options);
+
+    // Runs until the window closes (or the script ends); returns the exit status.
+    int run();
+
+  private:
+    struct Framebuffer {
+        int width = 0;
+        int height = 0;
+    };
+
+    void frame(const Framebuffer& framebuffer, double seconds);
+    void take_worker_results(const SolverSnapshot& snapshot);
+    // The cumulative solution, or the chosen bounce alone; nullptr (black) when there is none.
+    ViewerRadiance::Colours colours_to_show() const;
+    void handle_window_events(const WindowEvents& events, PanelRequests& requests);
+    void draw_scene(const Framebuffer& framebuffer);
+    std::optional<std::string> save_screenshot(const std::string& path, const Framebuffer& framebuffer);
+    // Scripted runs: once the worker has taken the steps asked for, writes the screenshot and ends.
+    void advance_script(const SolverSnapshot& snapshot, bool worker_busy, const Framebuffer& framebuffer);
+
+    ViewerOptions options_;
+    GlfwWindow window_;  // first: the OpenGL context everything below needs
+    ImGuiLayer imgui_;
+    Renderer renderer_;
+    ViewerPanel panel_;
+    CameraInput camera_input_;
+    ViewSettings view_;
+    FrameTimer frames_;
+    std::optional<FlyCamera> camera_;
+    std::shared_ptr<const ViewerGeometry> geometry_;  // what the renderer holds
+    std::shared_ptr<const ViewerRadiance> radiance_;
+    ViewerRadiance::Colours shown_colours_;  // what the renderer's colour buffer holds
+    std::uint64_t scene_version_ = 0;
+    int exit_status_ = 0;
+    bool script_done_ = false;
+    SolverWorker worker_;  // last: its thread stops and joins before the context goes
+};
+
+}  // namespace rad
