@@ -11,5 +11,7 @@ if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec "$radiosity" "$@"
 fi
 mkdir -p "$root/out"
+image="$root/out/cornell.png"
+[ $# -eq 0 ] || image="$root/out/render.png"
 echo "no display: rendering a headless screenshot instead of opening the viewer" >&2
-"$radiosity" render "$@" --out "$root/out/cornell.png"
+"$radiosity" render "$@" --out "$image"
