@@ -90,8 +90,5 @@ std::string TempDir::write(const std::string& name, const std::string& text) con
     return p.string();
 }
 
-std::string data_path(const std::string& name) {
-    return std::string(RAD_TEST_DATA_DIR) + "/" + name;
-}
 
 }  // namespace rad::test

@@ -35,6 +35,5 @@ class TempDir {
     std::filesystem::path path_;
 };
 
-std::string data_path(const std::string& name);
 
 }  // namespace rad::test
