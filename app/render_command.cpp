@@ -1,5 +1,6 @@
 // `radiosity render [SCENE] --out FILE`: solves the scene once and writes the image a camera sees, with no
-// window (EGL). .png gets exposure and the sRGB curve; .exr and .pfm hold linear radiance L = B / π.
+// window (EGL, or OSMesa). .png gets exposure and the sRGB curve; .exr and .pfm hold linear radiance L = B /
+// π.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 
 #include "commands.hpp"
 #include "gl/headless_context.hpp"
+#include "gl_platform_option.hpp"
 #include "image_io.hpp"
 #include "rad/camera_view.hpp"
 #include "rad/error.hpp"
@@ -30,12 +32,15 @@ struct RenderOptions {
     double exposure = 0.0;
     bool flat = false;
     bool outline = false;
+    HeadlessPlatform gl_platform = HeadlessPlatform::automatic;
 };
 
 // Largest image side: 16384² float RGBA with 4 samples is already 4 GiB of framebuffer.
 constexpr int kMaxImageSide = 16384;
 
-glm::dvec3 vec(const std::vector<double>& v, std::size_t at) { return {v[at], v[at + 1], v[at + 2]}; }
+glm::dvec3 vec(const std::vector<double>& v, std::size_t at) {
+    return {v[at], v[at + 1], v[at + 2]};
+}
 
 Camera parse_camera(const std::string& text, const Camera& fallback) {
     std::vector<double> values;
@@ -84,17 +89,20 @@ int run_render(RenderOptions options) {
         return 1;
     }
     const auto start = std::chrono::steady_clock::now();
-    const HeadlessContext context;
+    const HeadlessContext context(options.gl_platform);
     const RadianceImage image =
         SceneImageRenderer(pipeline, options.outline).render(camera, options.width, options.height);
-    const double render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double render_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_image(options.out, image, options.exposure);
 
     const StageSeconds& s = pipeline.seconds();
-    std::printf("%zu patches, %s: %zu steps, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f, "
-                "render %.3f (%s)\n",
-                pipeline.loaded().patches.size(), std::string(solver_method_name(pipeline.method())).c_str(),
-                report.step, report.residual, s.mesh, s.form_factors, s.solve, render_seconds, context.description().c_str());
+    std::printf(
+        "%zu patches, %s: %zu steps, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f, "
+        "render %.3f (%s)\n",
+        pipeline.loaded().patches.size(), std::string(solver_method_name(pipeline.method())).c_str(),
+        report.step, report.residual, s.mesh, s.form_factors, s.solve, render_seconds,
+        context.description().c_str());
     std::printf("wrote %s (%dx%d)\n", options.out.c_str(), options.width, options.height);
     return 0;
 }
@@ -103,9 +111,12 @@ int run_render(RenderOptions options) {
 
 CommandRunner add_render_command(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
-    CLI::App* render = app.add_subcommand("render", "Solve SCENE and write the image a camera sees (no window)");
+    CLI::App* render =
+        app.add_subcommand("render", "Solve SCENE and write the image a camera sees (no window)");
     add_pipeline_options(*render, options->pipeline);
-    render->add_option("--out", options->out, "Image to write: .png (exposure, sRGB), .exr or .pfm (linear radiance)")
+    render
+        ->add_option("--out", options->out,
+                     "Image to write: .png (exposure, sRGB), .exr or .pfm (linear radiance)")
         ->required();
     render->add_option("--width", options->width, "Image width in pixels")
         ->check(CLI::Range(1, kMaxImageSide))
@@ -113,15 +124,18 @@ CommandRunner add_render_command(CLI::App& app) {
     render->add_option("--height", options->height, "Image height in pixels")
         ->check(CLI::Range(1, kMaxImageSide))
         ->capture_default_str();
-    render->add_option("--camera", options->camera,
-                       "ex,ey,ez,tx,ty,tz[,ux,uy,uz]: eye, target and up (default: the scene's camera, or one "
-                       "that frames the scene)");
+    render->add_option(
+        "--camera", options->camera,
+        "ex,ey,ez,tx,ty,tz[,ux,uy,uz]: eye, target and up (default: the scene's camera, or one "
+        "that frames the scene)");
     render->add_option("--fov", options->fov, "Vertical field of view in degrees (default: the camera's own)")
         ->check(CLI::Range(1.0, 179.0));
-    render->add_option("--exposure", options->exposure, "PNG only: multiply radiance by 2^EXPOSURE before sRGB")
+    render
+        ->add_option("--exposure", options->exposure, "PNG only: multiply radiance by 2^EXPOSURE before sRGB")
         ->capture_default_str();
     render->add_flag("--flat", options->flat, "Show each patch's own radiosity instead of interpolating");
     render->add_flag("--outline", options->outline, "Draw the patches' edges");
+    add_gl_platform_option(*render, options->gl_platform);
     return [render, options]() -> int {
         if (!*render) return -1;
         return run_render(*options);

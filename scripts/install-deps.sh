@@ -7,7 +7,7 @@ packages=(
   libopenmesh-dev libembree-dev libtbb-dev libglm-dev
   libtinyobjloader-dev libcli11-dev libeigen3-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libstb-dev libtinyexr-dev
+  python3-glad libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri libstb-dev libtinyexr-dev
   libglfw3-dev libimgui-dev xvfb xauth
 )
 

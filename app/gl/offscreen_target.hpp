@@ -1,6 +1,6 @@
 #pragma once
 
-#include <epoxy/gl.h>
+#include <glad/gl.h>
 
 #include <glm/vec3.hpp>
 #include <vector>
@@ -10,7 +10,7 @@ namespace rad {
 // A multisampled float framebuffer to draw into, resolved and read back as linear RGB. Float storage keeps
 // radiance exact for the linear images (EXR, PFM); PNG encoding happens on the CPU afterwards.
 class OffscreenTarget {
-public:
+  public:
     OffscreenTarget(int width, int height, int samples = 4);
     ~OffscreenTarget();
     OffscreenTarget(const OffscreenTarget&) = delete;
@@ -23,7 +23,7 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
 
-private:
+  private:
     int width_;
     int height_;
     GLuint multisampled_fbo_ = 0;

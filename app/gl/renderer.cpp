@@ -12,7 +12,8 @@ enum Buffer { kPositions = 0, kColours = 1, kTriangles = 2, kOutline = 3 };
 
 }  // namespace
 
-Renderer::Renderer() : patch_program_("patch.vert", "patch.frag"), outline_program_("outline.vert", "outline.frag") {
+Renderer::Renderer()
+    : patch_program_("patch.vert", "patch.frag"), outline_program_("outline.vert", "outline.frag") {
     glGenVertexArrays(1, &vertex_array_);
     glGenBuffers(4, buffers_);
     glBindVertexArray(vertex_array_);
@@ -34,7 +35,8 @@ void Renderer::upload_geometry(std::span<const glm::vec3> positions, std::span<c
                                std::span<const std::uint32_t> outline_lines) {
     glBindVertexArray(vertex_array_);  // element buffer bindings belong to the vertex array
     glBindBuffer(GL_ARRAY_BUFFER, buffers_[kPositions]);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(positions.size_bytes()), positions.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(positions.size_bytes()), positions.data(),
+                 GL_STATIC_DRAW);
     // Black until the first colours arrive.
     const std::vector<glm::vec3> black(positions.size(), glm::vec3(0.0f));
     glBindBuffer(GL_ARRAY_BUFFER, buffers_[kColours]);
@@ -44,8 +46,8 @@ void Renderer::upload_geometry(std::span<const glm::vec3> positions, std::span<c
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(triangles.size_bytes()), triangles.data(),
                  GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[kOutline]);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(outline_lines.size_bytes()), outline_lines.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(outline_lines.size_bytes()),
+                 outline_lines.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
     vertex_count_ = positions.size();
     triangle_index_count_ = triangles.size();
@@ -74,7 +76,8 @@ void Renderer::draw(const glm::mat4& view_projection, const DrawOptions& options
     glBindVertexArray(vertex_array_);
 
     patch_program_.use();
-    glUniformMatrix4fv(patch_program_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+    glUniformMatrix4fv(patch_program_.uniform("view_projection"), 1, GL_FALSE,
+                       glm::value_ptr(view_projection));
     glUniform1f(patch_program_.uniform("exposure_scale"), options.exposure_scale);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[kTriangles]);
     // Push the patches back a little so their outline wins the depth test.

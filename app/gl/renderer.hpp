@@ -1,6 +1,6 @@
 #pragma once
 
-#include <epoxy/gl.h>
+#include <glad/gl.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -23,7 +23,7 @@ struct DrawOptions {
 // bound. Geometry is uploaded once; after each solver step only the per-vertex colour buffer changes.
 // Needs a current OpenGL 3.3 core context for its whole life.
 class Renderer {
-public:
+  public:
     Renderer();
     ~Renderer();
     Renderer(const Renderer&) = delete;
@@ -39,7 +39,7 @@ public:
     std::size_t geometry_uploads() const { return geometry_uploads_; }
     std::size_t colour_uploads() const { return colour_uploads_; }
 
-private:
+  private:
     ShaderProgram patch_program_;
     ShaderProgram outline_program_;
     GLuint vertex_array_ = 0;

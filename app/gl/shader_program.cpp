@@ -53,6 +53,8 @@ ShaderProgram::ShaderProgram(std::string_view vertex_name, std::string_view frag
     }
 }
 
-ShaderProgram::~ShaderProgram() { glDeleteProgram(program_); }
+ShaderProgram::~ShaderProgram() {
+    glDeleteProgram(program_);
+}
 
 }  // namespace rad

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <epoxy/gl.h>
+#include <glad/gl.h>
 
 #include <string_view>
 
@@ -8,7 +8,7 @@ namespace rad {
 
 // A linked vertex + fragment program built from two embedded shaders (shaders/NAME).
 class ShaderProgram {
-public:
+  public:
     // Throws std::runtime_error with the driver's log when a shader does not compile or link.
     ShaderProgram(std::string_view vertex_name, std::string_view fragment_name);
     ~ShaderProgram();
@@ -18,7 +18,7 @@ public:
     void use() const { glUseProgram(program_); }
     GLint uniform(const char* name) const { return glGetUniformLocation(program_, name); }
 
-private:
+  private:
     GLuint program_ = 0;
 };
 

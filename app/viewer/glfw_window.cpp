@@ -1,8 +1,8 @@
 #include "viewer/glfw_window.hpp"
 
-#include <epoxy/gl.h>
+#include <glad/gl.h>
 
-// epoxy declares the GL functions; GLFW must not include its own GL header.
+// glad declares the GL functions; GLFW must not include its own GL header.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -50,6 +50,11 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
         throw std::runtime_error("cannot open an OpenGL 3.3 window: " + reason);
     }
     glfwMakeContextCurrent(window_);
+    if (gladLoadGL(glfwGetProcAddress) < GLAD_MAKE_VERSION(3, 3)) {
+        glfwDestroyWindow(window_);
+        glfwTerminate();
+        throw std::runtime_error("cannot load the OpenGL 3.3 functions of the window's context");
+    }
     glfwSwapInterval(1);
     glfwSetWindowUserPointer(window_, this);
     glfwSetScrollCallback(window_, on_scroll);

@@ -1,6 +1,6 @@
 #include "viewer/imgui_layer.hpp"
 
-#include <epoxy/gl.h>
+#include <glad/gl.h>
 #include <imgui.h>
 
 #include <backends/imgui_impl_glfw.h>

@@ -1,6 +1,6 @@
 #include "viewer/viewer.hpp"
 
-#include <epoxy/gl.h>
+#include <glad/gl.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

@@ -1,6 +1,6 @@
 #include "viewer/window_screenshot.hpp"
 
-#include <epoxy/gl.h>
+#include <glad/gl.h>
 
 #include <cmath>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // Frame time of the renderer on a headless context: one draw of N triangles into a 1024 × 1024 multisampled
 // float target, finished on the GPU (glFinish), and the colour-buffer upload after a solver step.
 #include <benchmark/benchmark.h>
-#include <epoxy/gl.h>
+#include <glad/gl.h>
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
