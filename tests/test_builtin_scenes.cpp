@@ -6,6 +6,7 @@
 
 #include "rad/builtin_scenes.hpp"
 #include "rad/error.hpp"
+#include "rad/form_factors.hpp"
 #include "rad/patches.hpp"
 #include "rad/polygon.hpp"
 
@@ -115,6 +116,29 @@ TEST(TestScenes, CubeIsClosedWithOneEmittingFace) {
     for (const Patch& p : patches.patches) {
         EXPECT_NEAR(glm::dot(p.normal, glm::normalize(glm::dvec3(0.5) - p.centroid)), 1.0, 1e-12);
     }
+}
+
+TEST(TestScenes, WhiteRoomIsTheCornellBoxClosedAndWhite) {
+    const Scene room = make_white_room();
+    const Scene cornell = make_cornell_box();
+    ASSERT_EQ(room.surfaces.size(), cornell.surfaces.size() + 1);
+    const double front_wall = 0.5 * (552.8 + 556.0) * 548.8;  // a trapezoid: the left wall leans out by 3.2 mm
+    EXPECT_NEAR(total_area(room), total_area(cornell) + front_wall, 1e-6 * total_area(room));
+    for (const Surface& s : room.surfaces) {
+        EXPECT_EQ(s.material.reflectance, s.material.emits() ? glm::dvec3(0.78) : glm::dvec3(0.95)) << s.name;
+    }
+    // Closed: no hemisphere ray leaves. (Rows do not all sum to 1: the floor under the blocks sees only their
+    // insides, which block.)
+    const PatchMesh patches = build_patches(room, {140.0});
+    FormFactorReport report;
+    FormFactorOptions options;
+    options.rays = 1024;
+    compute_form_factors(patches, options, &report);
+    EXPECT_LT(report.escaped_ray_fraction, 1e-5);
+    EXPECT_NEAR(report.max_row_sum, 1.0, 1e-3);
+    ASSERT_TRUE(room.camera.has_value());
+    EXPECT_LT(room.camera->eye.z, 559.2);
+    EXPECT_GT(room.camera->eye.z, 0.0);
 }
 
 TEST(TestScenes, SquaresFaceEachOther) {

@@ -80,11 +80,45 @@ void add_cornell_blocks(SoupWriter& w, const Material& white) {
     w.add_polygon({{265, 0, 296}, {265, 330, 296}, {423, 330, 247}, {423, 0, 247}});
 }
 
+// The Cornell box's materials, or one white for every surface but the light.
+struct CornellMaterials {
+    Material white, red, green, light;
+};
+
+// The Cornell PCG geometry; `closed` adds a front wall, so no light leaves.
+Scene make_cornell_geometry(const std::string& source, const CornellMaterials& m, bool closed) {
+    SoupWriter w(source);
+    w.begin_surface("floor", m.white);
+    w.add_polygon({{552.8, 0, 0}, {0, 0, 0}, {0, 0, 559.2}, {549.6, 0, 559.2}});
+    add_cornell_ceiling(w, m.white);
+    w.begin_surface("light", m.light);
+    w.add_polygon({{343.0, 548.8, 227.0}, {343.0, 548.8, 332.0}, {213.0, 548.8, 332.0}, {213.0, 548.8, 227.0}});
+    w.begin_surface("back wall", m.white);
+    w.add_polygon({{549.6, 0, 559.2}, {0, 0, 559.2}, {0, 548.8, 559.2}, {556.0, 548.8, 559.2}});
+    w.begin_surface("right wall", m.green);
+    w.add_polygon({{0, 0, 559.2}, {0, 0, 0}, {0, 548.8, 0}, {0, 548.8, 559.2}});
+    w.begin_surface("left wall", m.red);
+    w.add_polygon({{552.8, 0, 0}, {549.6, 0, 559.2}, {556.0, 548.8, 559.2}, {556.0, 548.8, 0}});
+    if (closed) {
+        w.begin_surface("front wall", m.white);
+        w.add_polygon({{0, 0, 0}, {552.8, 0, 0}, {556.0, 548.8, 0}, {0, 548.8, 0}});
+    }
+    add_cornell_blocks(w, m.white);
+    return w.build();
+}
+
+// The published light; `dimming` scales its emission.
+Material cornell_light(double dimming = 1.0) {
+    return make_material("light", {0.78, 0.78, 0.78}, dimming * glm::dvec3{17.0, 12.0, 4.0});
+}
+
 }  // namespace
 
 const std::vector<BuiltinSceneInfo>& builtin_scenes() {
     static const std::vector<BuiltinSceneInfo> scenes = {
         {"cornell", "the Cornell box (Cornell PCG data, millimetres), the light's opening cut out of the ceiling"},
+        {"white-room", "the Cornell box closed by a front wall, every surface white with reflectance 0.95, the light "
+                       "dimmed tenfold: a high-albedo closed scene, seen from inside"},
         {"cube", "a closed unit cube seen from inside; the top face emits E = 1, every face has reflectance 0.5"},
         {"parallel", "two unit squares facing each other at distance 1; the lower emits E = 1, reflectance 0.5"},
         {"perpendicular", "two unit squares sharing an edge at a right angle; the floor emits E = 1"},
@@ -94,6 +128,7 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
 
 Scene make_builtin_scene(const std::string& name) {
     if (name == "cornell") return make_cornell_box();
+    if (name == "white-room") return make_white_room();
     if (name == "cube") return make_cube();
     if (name == "parallel") return make_parallel_squares();
     if (name == "perpendicular") return make_perpendicular_squares();
@@ -103,28 +138,22 @@ Scene make_builtin_scene(const std::string& name) {
 }
 
 Scene make_cornell_box() {
-    const Material white = make_material("white", {0.725, 0.71, 0.68});
-    const Material red = make_material("red", {0.63, 0.065, 0.05});
-    const Material green = make_material("green", {0.14, 0.45, 0.091});
-    const Material light = make_material("light", {0.78, 0.78, 0.78}, {17.0, 12.0, 4.0});
-
-    SoupWriter w("builtin:cornell");
-    w.begin_surface("floor", white);
-    w.add_polygon({{552.8, 0, 0}, {0, 0, 0}, {0, 0, 559.2}, {549.6, 0, 559.2}});
-    add_cornell_ceiling(w, white);
-    w.begin_surface("light", light);
-    w.add_polygon({{343.0, 548.8, 227.0}, {343.0, 548.8, 332.0}, {213.0, 548.8, 332.0}, {213.0, 548.8, 227.0}});
-    w.begin_surface("back wall", white);
-    w.add_polygon({{549.6, 0, 559.2}, {0, 0, 559.2}, {0, 548.8, 559.2}, {556.0, 548.8, 559.2}});
-    w.begin_surface("right wall", green);
-    w.add_polygon({{0, 0, 559.2}, {0, 0, 0}, {0, 548.8, 0}, {0, 548.8, 559.2}});
-    w.begin_surface("left wall", red);
-    w.add_polygon({{552.8, 0, 0}, {549.6, 0, 559.2}, {556.0, 548.8, 559.2}, {556.0, 548.8, 0}});
-    add_cornell_blocks(w, white);
-
-    Scene scene = w.build();
+    const CornellMaterials materials{make_material("white", {0.725, 0.71, 0.68}),
+                                     make_material("red", {0.63, 0.065, 0.05}),
+                                     make_material("green", {0.14, 0.45, 0.091}), cornell_light()};
+    Scene scene = make_cornell_geometry("builtin:cornell", materials, false);
     // 35 mm lens on 25 mm film: a vertical field of view of 2 atan(12.5 / 35).
     scene.camera = Camera{{278, 273, -800}, {278, 273, 0}, {0, 1, 0}, 39.3077};
+    return scene;
+}
+
+Scene make_white_room() {
+    const Material white = make_material("white", glm::dvec3(0.95));
+    // Light bounces about 20 times before it is absorbed, so the light is dimmed tenfold to keep the walls'
+    // radiance near the open box's.
+    Scene scene = make_cornell_geometry("builtin:white-room", {white, white, white, cornell_light(0.1)}, true);
+    // Inside, just behind the front wall, seeing the back wall, the blocks and the light.
+    scene.camera = Camera{{278, 273, 30}, {278, 273, 559.2}, {0, 1, 0}, 70.0};
     return scene;
 }
 

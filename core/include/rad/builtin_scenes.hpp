@@ -18,6 +18,9 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes();
 Scene make_builtin_scene(const std::string& name);
 
 Scene make_cornell_box();
+// The Cornell box closed by a front wall, every surface but the light white with ρ = 0.95: high albedo.
+// The light is the published one dimmed tenfold.
+Scene make_white_room();
 // A closed unit cube seen from inside: the top face emits E = 1 (Le = 1/π), every face has ρ = 0.5.
 Scene make_cube();
 // Two unit squares facing each other at distance 1; the lower one emits E = 1, both have ρ = 0.5.
