@@ -1,0 +1,50 @@
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <span>
+
+namespace rad {
+
+// A linear RGB image (radiance), width × height, rows top first; it views pixels it does not own
+// (RadianceImage and ReferenceImage convert as {image.width, image.height, image.pixels}).
+struct ImageView {
+    int width = 0;
+    int height = 0;
+    std::span<const glm::vec3> pixels;
+};
+
+enum class ErrorChannels {
+    // Relative error of the luminance Y = 0.2126 R + 0.7152 G + 0.0722 B (Rec. 709 / sRGB primaries).
+    luminance,
+    // Mean of the three channels' relative errors, each channel with its own floor.
+    rgb,
+};
+
+struct ImageErrorOptions {
+    int block_size = 8;
+    ErrorChannels channels = ErrorChannels::luminance;
+    // Values below floor_fraction × the reference image's mean (of the same channel) count as that floor
+    // in the denominator, so a near-black reference region neither divides by zero nor dominates the mean.
+    double floor_fraction = 0.01;
+};
+
+// The mean relative error of `image` against `reference` (the same size) over blocks of block_size ×
+// block_size pixels: each block's error is |mean(image) − mean(reference)| / max(mean(reference), floor),
+// the means taken over the block's pixels, and blocks are weighted by their pixel count (only the partial
+// blocks at the right and bottom edges have fewer). Averaging within a block first lets a noisy reference
+// (a path-traced one) converge with the block's 64 pixels' samples instead of each pixel's, and lets an
+// image differ a little in where an edge falls (rasterization against box-filtered rays) without
+// counting it as error. Luminance by default: one well-conditioned number, and the weak channels of
+// saturated surfaces (the Cornell box's red wall has ρ_b = 0.05), where the reference is noisiest
+// relative to its value, do not weigh as much as the channels a viewer sees; ErrorChannels::rgb counts
+// colour errors too. Throws std::invalid_argument when the sizes differ or an image is empty.
+double block_relative_error(const ImageView& image, const ImageView& reference,
+                            const ImageErrorOptions& options = {});
+
+// The same with blocks of one pixel: the mean over pixels of |image − reference| / max(reference, floor).
+// It includes the reference's per-pixel noise, so it is an upper bound of the error against a noisy
+// reference rather than an estimate of it.
+double pixel_relative_error(const ImageView& image, const ImageView& reference,
+                            const ImageErrorOptions& options = {});
+
+}  // namespace rad

@@ -1,0 +1,105 @@
+// The image error metric: the mean over 8 × 8 blocks of the relative error of the block's mean.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "rad/image_error.hpp"
+
+namespace rad {
+namespace {
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<glm::vec3> pixels;
+    ImageView view() const { return {width, height, pixels}; }
+};
+
+// A smooth, coloured, strictly positive test image.
+Image gradient(int width, int height) {
+    Image image{width, height, {}};
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            image.pixels.emplace_back(1.0f + 0.1f * static_cast<float>(x),
+                                      0.5f + 0.05f * static_cast<float>(y), 0.25f);
+        }
+    }
+    return image;
+}
+
+Image scaled(const Image& image, float s) {
+    Image out = image;
+    for (glm::vec3& p : out.pixels) p *= s;
+    return out;
+}
+
+TEST(ImageError, IsZeroAgainstItself) {
+    const Image a = gradient(37, 21);
+    EXPECT_EQ(block_relative_error(a.view(), a.view()), 0.0);
+    EXPECT_EQ(pixel_relative_error(a.view(), a.view()), 0.0);
+    EXPECT_EQ(block_relative_error(a.view(), a.view(), {.channels = ErrorChannels::rgb}), 0.0);
+}
+
+TEST(ImageError, OfAScaledCopyIsTheScaleError) {
+    const Image reference = gradient(40, 24);
+    for (const float s : {1.1f, 0.8f}) {
+        const Image image = scaled(reference, s);
+        EXPECT_NEAR(block_relative_error(image.view(), reference.view()), std::abs(s - 1.0f), 1e-6) << s;
+        EXPECT_NEAR(pixel_relative_error(image.view(), reference.view()), std::abs(s - 1.0f), 1e-6) << s;
+        EXPECT_NEAR(block_relative_error(image.view(), reference.view(), {.channels = ErrorChannels::rgb}),
+                    std::abs(s - 1.0f), 1e-6)
+            << s;
+    }
+}
+
+// Noise that averages out within a block costs the pixel error but not the block error.
+TEST(ImageError, BlocksAverageOutPixelNoise) {
+    Image flat{16, 16, std::vector<glm::vec3>(256, glm::vec3(1.0f))};
+    Image checker = flat;
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 16; ++x)
+            checker.pixels[static_cast<std::size_t>(y * 16 + x)] *= (x + y) % 2 ? 1.2f : 0.8f;
+    }
+    EXPECT_NEAR(block_relative_error(checker.view(), flat.view()), 0.0, 1e-6);
+    EXPECT_NEAR(pixel_relative_error(checker.view(), flat.view()), 0.2, 1e-6);
+}
+
+// A block whose reference is black counts against the floor, a share of the reference's mean, so it adds a
+// bounded amount instead of infinity; black against black is no error.
+TEST(ImageError, BlackReferenceBlocksUseTheFloor) {
+    Image reference{16, 8, std::vector<glm::vec3>(128, glm::vec3(0.0f))};
+    // The left 8 × 8 block is lit (luminance 1), the right one black.
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 8; ++x) reference.pixels[static_cast<std::size_t>(y * 16 + x)] = glm::vec3(1.0f);
+    }
+    EXPECT_EQ(block_relative_error(reference.view(), reference.view()), 0.0);
+    Image image = reference;
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 8; x < 16; ++x) image.pixels[static_cast<std::size_t>(y * 16 + x)] = glm::vec3(0.001f);
+    }
+    // The reference's mean luminance is 0.5, so the floor is 0.005 and the dark block's error 0.001 / 0.005.
+    const double expected = 0.5 * (0.0 + 0.001 / 0.005);
+    EXPECT_NEAR(block_relative_error(image.view(), reference.view()), expected, 1e-5);
+    ImageErrorOptions no_floor;
+    no_floor.floor_fraction = 0.0;
+    // Without a floor, a black reference block counts as no error rather than infinity.
+    EXPECT_EQ(block_relative_error(image.view(), reference.view(), no_floor), 0.0);
+}
+
+// Partial blocks at the right and bottom edges weigh by their pixels: a 9 × 9 image is one 8 × 8 block and
+// three thin ones; only the corner pixel is wrong, by 100 %.
+TEST(ImageError, EdgeBlocksWeighByTheirPixels) {
+    const Image reference{9, 9, std::vector<glm::vec3>(81, glm::vec3(1.0f))};
+    Image image = reference;
+    image.pixels.back() = glm::vec3(2.0f);
+    EXPECT_NEAR(block_relative_error(image.view(), reference.view()), 1.0 / 81.0, 1e-6);
+}
+
+TEST(ImageError, RejectsImagesOfDifferentSizes) {
+    const Image a = gradient(8, 8), b = gradient(8, 9);
+    EXPECT_THROW(block_relative_error(a.view(), b.view()), std::invalid_argument);
+    EXPECT_THROW(block_relative_error(Image{}.view(), Image{}.view()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rad
