@@ -5,6 +5,7 @@
 
 #include "form_factors_analytic.hpp"
 #include "form_factors_diagnostics.hpp"
+#include "form_factors_exposure.hpp"
 #include "form_factors_hemisphere.hpp"
 #include "form_factors_memory.hpp"
 #include "form_factors_rows.hpp"
@@ -54,21 +55,24 @@ FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactor
     if (progress) progress->begin("form factors", patches.size());
     RowStats stats;
     FormFactorMatrix matrix;
+    std::vector<double> covered(options.method == FormFactorMethod::hemisphere ? patches.size() : 0, 0.0);
     if (patches.size() > 0) {
         const RayScene scene(patches);
         const RowFunction row = options.method == FormFactorMethod::hemisphere
-                                    ? hemisphere_rows(patches, scene, rays, options.seed)
+                                    ? hemisphere_rows(patches, scene, rays, options.seed, covered)
                                     : analytic_rows(patches, scene, rays, options.seed);
         matrix = assemble_rows(patches.size(), row, stats, progress);
     }
 
     const FormFactorDiagnostics estimate = diagnose(matrix, patches);
     if (options.enforce_reciprocity) matrix = enforce_reciprocity(matrix, patches);
+    if (!covered.empty()) expose_rows(matrix, covered);
     if (options.normalize_rows) normalize_rows(matrix);
     if (report) {
         report->estimate = estimate;
         const bool changed = options.enforce_reciprocity || options.normalize_rows;
         fill_report(*report, matrix, changed ? diagnose(matrix, patches) : estimate, stats);
+        report->covered_area_fraction = covered_area_fraction(patches, covered);
         report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     return matrix;

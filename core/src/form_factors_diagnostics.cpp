@@ -72,8 +72,9 @@ Tally tally_upper(const FormFactorMatrix& m, const PatchMesh& patches, const Ran
             const std::uint32_t j = m.column[k];
             const std::uint64_t back = find_entry(m, j, static_cast<std::uint32_t>(i));
             if (back != kAbsent) mirrored[back] = 1;
-            t.add_pair(patches.patches[i].area * m.value[k],
-                       back != kAbsent ? patches.patches[j].area * m.value[back] : 0.0);
+            // Exposed areas: rows of partly covered patches are those of their exposed parts.
+            t.add_pair(patches.patches[i].area * m.exposed_fraction(i) * m.value[k],
+                       back != kAbsent ? patches.patches[j].area * m.exposed_fraction(j) * m.value[back] : 0.0);
         }
     }
     return t;
@@ -84,7 +85,7 @@ Tally tally_lower_only(const FormFactorMatrix& m, const PatchMesh& patches, cons
                        const std::vector<std::uint8_t>& mirrored, Tally t) {
     for (std::size_t i = rows.begin(); i != rows.end(); ++i) {
         for (std::uint64_t k = m.row_begin[i]; k < m.row_begin[i + 1] && m.column[k] < i; ++k) {
-            if (!mirrored[k]) t.add_pair(patches.patches[i].area * m.value[k], 0.0);
+            if (!mirrored[k]) t.add_pair(patches.patches[i].area * m.exposed_fraction(i) * m.value[k], 0.0);
         }
     }
     return t;

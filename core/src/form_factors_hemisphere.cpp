@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "form_factors_coverage.hpp"
 #include "form_factors_sampling.hpp"
 
 namespace rad {
@@ -88,7 +89,8 @@ void hemisphere_rays(const PatchMesh& patches, std::uint32_t patch, std::uint64_
     }
 }
 
-RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed) {
+RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
+                            std::vector<double>& covered) {
     const double offset = ray_offset(patches);
     auto scratch = std::make_shared<tbb::enumerable_thread_specific<HemisphereScratch>>([&patches, rays] {
         HemisphereScratch s;
@@ -98,10 +100,11 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
         s.accumulated.assign(patches.size(), 0.0);
         return s;
     });
-    return [&patches, &scene, rays, seed, offset, scratch](std::uint32_t i, std::vector<RowEntry>& entries,
-                                                           RowStats& stats) {
+    return [&patches, &scene, rays, seed, offset, scratch, &covered](
+               std::uint32_t i, std::vector<RowEntry>& entries, RowStats& stats) {
         HemisphereScratch& s = scratch->local();
         hemisphere_rays(patches, i, seed, offset, s.rays, s.weights);
+        double blocked = 0.0;  // each row is computed once, so covered[i] has one writer
         for (std::size_t first = 0; first < s.rays.size(); first += kBatchRays) {
             const std::size_t count = std::min(kBatchRays, s.rays.size() - first);
             scene.intersect(std::span(s.rays).subspan(first, count), s.hits);
@@ -109,6 +112,7 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
                 const std::uint32_t j = s.hits[k].patch;
                 if (j == RayHit::kMissed) ++stats.escaped_rays;
                 const double weight = s.weights[first + k];
+                if (j == RayHit::kBackFace) blocked += weight;
                 if (j >= patches.size() || j == i || !(weight > 0.0)) continue;  // escaped or blocked
                 if (s.accumulated[j] == 0.0) s.touched.push_back(j);
                 s.accumulated[j] += weight;
@@ -117,6 +121,9 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
         stats.rays += s.rays.size();
         std::sort(s.touched.begin(), s.touched.end());
         const double scale = 1.0 / static_cast<double>(s.rays.size());
+        // Rays that met back faces came from covered points or passed under a single-sided sheet; probes
+        // tell.
+        covered[i] = blocked > 0.0 ? covered_share(patches, scene, i, seed, offset) : 0.0;
         for (std::uint32_t j : s.touched) {
             entries.push_back({j, s.accumulated[j] * scale});
             s.accumulated[j] = 0.0;

@@ -30,6 +30,9 @@ void hemisphere_rays(const PatchMesh& patches, std::uint32_t patch, std::uint64_
 
 // F_ij = (1/N) Σ_k weight_k [ray k first meets the front of patch j]. Rays that meet a back face first are
 // blocked and count for no patch; rays that meet nothing have escaped.
-RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed);
+// covered[i] receives the share of patch i that other geometry covers (covered_share), measured for the
+// patches whose rays met back faces. `covered` must have one element per patch.
+RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
+                            std::vector<double>& covered);
 
 }  // namespace rad

@@ -61,15 +61,24 @@ RadiositySystem make_radiosity_system(const Scene& scene, const PatchMesh& patch
     system.area.reserve(n);
     system.reflectance.reserve(n);
     system.emission.reserve(n);
-    for (const Patch& patch : patches.patches) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const Patch& patch = patches.patches[i];
         const Material& material = scene.surfaces.at(patch.surface).material;
-        system.area.push_back(patch.area);
+        // Only the exposed part of a patch emits, absorbs and reflects into the scene.
+        system.area.push_back(patch.area * form_factors.exposed_fraction(i));
         system.reflectance.push_back(material.reflectance);
         system.emission.push_back(material.emitted_radiosity());
     }
     system.form_factors = std::move(form_factors);
     validate_radiosity_system(system);
     return system;
+}
+
+std::vector<glm::dvec3> whole_patch_radiosity(const RadiositySystem& system, const PatchMesh& patches,
+                                              std::span<const glm::dvec3> radiosity) {
+    std::vector<glm::dvec3> whole(radiosity.begin(), radiosity.end());
+    for (std::size_t i = 0; i < whole.size(); ++i) whole[i] *= system.area[i] / patches.patches[i].area;
+    return whole;
 }
 
 void validate_radiosity_system(const RadiositySystem& system) {

@@ -12,12 +12,18 @@ struct FormFactorMatrix {
     std::vector<std::uint64_t> row_begin{0};
     std::vector<std::uint32_t> column;
     std::vector<float> value;
+    // Per row, the share of the patch that other geometry does not cover (a box standing on a floor covers
+    // part of the floor patches under its edges); empty means every patch is wholly exposed. A row then holds
+    // the form factors of its exposed part, so the light a partly covered patch reflects leaves from that
+    // part only instead of being lost into the box.
+    std::vector<float> exposed;
 
     std::size_t rows() const { return row_begin.size() - 1; }
+    double exposed_fraction(std::size_t row) const { return exposed.empty() ? 1.0 : exposed[row]; }
     std::size_t nonzeros() const { return column.size(); }
     std::size_t memory_bytes() const {
         return row_begin.capacity() * sizeof(std::uint64_t) + column.capacity() * sizeof(std::uint32_t) +
-               value.capacity() * sizeof(float);
+               (value.capacity() + exposed.capacity()) * sizeof(float);
     }
 };
 

@@ -22,9 +22,15 @@ struct RadiositySystem {
     std::size_t size() const { return area.size(); }
 };
 
-// Gathers each patch's ρ and E from its surface's material and takes the form factors over.
+// Gathers each patch's ρ and E from its surface's material and takes the form factors over. A patch's area
+// is its exposed part (FormFactorMatrix::exposed), so B is the radiosity of what can be seen of it.
 RadiositySystem make_radiosity_system(const Scene& scene, const PatchMesh& patches,
                                       FormFactorMatrix form_factors);
+
+// The radiosity averaged over each whole patch, its covered part dark: solution × exposed area / area. This
+// is what sampling points over the patch measures (a path tracer's patch estimate).
+std::vector<glm::dvec3> whole_patch_radiosity(const RadiositySystem& system, const PatchMesh& patches,
+                                              std::span<const glm::dvec3> radiosity);
 
 // Throws std::invalid_argument when the arrays disagree in size, a column is out of range, or a value is
 // NaN, infinite or negative (or an area is zero): the solvers rely on finite, non-negative input. Values

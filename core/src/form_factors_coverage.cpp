@@ -1,0 +1,67 @@
+#include "form_factors_coverage.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "form_factors_hemisphere.hpp"
+#include "form_factors_sampling.hpp"
+
+namespace rad {
+
+namespace {
+
+constexpr int kDirections = 5;              // the normal and four grazing azimuths
+constexpr double kGrazingElevation = 10.0;  // degrees above the patch's plane
+constexpr std::uint64_t kProbeSalt = 0x636f766572656421ull;
+
+// The probe directions in the patch's frame: +z, then four around it at the grazing elevation.
+std::array<glm::dvec3, kDirections> probe_directions() {
+    const double elevation = kGrazingElevation * std::numbers::pi / 180.0;
+    std::array<glm::dvec3, kDirections> directions{glm::dvec3(0, 0, 1)};
+    for (int k = 0; k < 4; ++k) {
+        const double azimuth = k * std::numbers::pi / 2.0;
+        directions[k + 1] = {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                             std::sin(elevation)};
+    }
+    return directions;
+}
+
+}  // namespace
+
+double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint32_t patch, std::uint64_t seed,
+                     double offset) {
+    // The hemisphere estimator's own origins and area weights, from a stream of their own.
+    thread_local std::vector<Ray> origins, probes;
+    thread_local std::vector<double> weights;
+    thread_local std::vector<RayHit> hits;
+    origins.resize(kCoverageProbes);
+    weights.resize(kCoverageProbes);
+    hemisphere_rays(patches, patch, seed ^ kProbeSalt, offset, origins, weights);
+
+    const Frame frame = frame_around(patches.patches[patch].normal);
+    const std::array<glm::dvec3, kDirections> local = probe_directions();
+    probes.resize(origins.size() * kDirections);
+    hits.resize(probes.size());
+    for (std::size_t k = 0; k < origins.size(); ++k) {
+        for (int d = 0; d < kDirections; ++d) {
+            Ray& probe = probes[k * kDirections + d];
+            probe = origins[k];
+            probe.direction = glm::vec3(frame.to_world(local[d]));
+        }
+    }
+    scene.intersect(probes, hits);
+
+    double covered = 0.0, total = 0.0;
+    for (std::size_t k = 0; k < origins.size(); ++k) {
+        bool inside = true;
+        for (int d = 0; d < kDirections && inside; ++d)
+            inside = hits[k * kDirections + d].patch == RayHit::kBackFace;
+        total += weights[k];
+        if (inside) covered += weights[k];
+    }
+    return total > 0.0 ? covered / total : 0.0;
+}
+
+}  // namespace rad

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <cstdint>
+
+#include "rad/embree_scene.hpp"
+#include "rad/patches.hpp"
+
+namespace rad {
+
+// The share of a patch's area that other geometry covers, as a box standing on a floor covers the floor
+// under it. A point is covered when probe rays along its normal and in four directions 10° above its plane
+// all meet back faces first: from inside a closed object every direction does, while under a single-sided
+// sheet (an occluder, a table top seen from below) the grazing rays pass beside it. Stratified over
+// kCoverageProbes points; depends only on (seed, patch).
+double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint32_t patch, std::uint64_t seed,
+                     double offset);
+
+inline constexpr int kCoverageProbes = 256;
+
+}  // namespace rad
