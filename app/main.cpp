@@ -16,6 +16,7 @@ int run(int argc, char** argv) {
         rad::add_info_command(app),
         rad::add_solve_command(app),
         rad::add_render_command(app),
+        rad::add_bench_command(app),
         rad::add_view_command(app),
     };
     try {

@@ -1,5 +1,7 @@
 #include "rad/solution_json.hpp"
 
+#include "rad/atomic_file.hpp"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -70,26 +72,6 @@ json stats_json(const RadiositySystem& system, const SolveStatistics& stats) {
     };
 }
 
-// Writes `text` beside `path` and renames it into place; on any failure removes what it wrote.
-void write_atomically(const std::filesystem::path& path, const std::string& text) {
-    std::filesystem::path temporary = path;
-    temporary += ".tmp-" + std::to_string(::getpid());
-    try {
-        {
-            std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-            if (!out) throw std::runtime_error("cannot create " + temporary.string());
-            out << text;
-            out.flush();
-            if (!out) throw std::runtime_error("cannot write " + temporary.string());
-        }
-        std::filesystem::rename(temporary, path);
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw;
-    }
-}
-
 }  // namespace
 
 void write_solution_json(const std::string& path, const Scene& scene, const PatchMesh& patches,
@@ -106,7 +88,7 @@ void write_solution_json(const std::string& path, const Scene& scene, const Patc
     document["stats"] = stats_json(system, stats);
     if (!std::isfinite(stats.residual))
         throw std::invalid_argument("solution JSON: the residual is not finite");
-    write_atomically(path, document.dump() + "\n");
+    write_file_atomically(path, document.dump() + "\n");
 }
 
 }  // namespace rad

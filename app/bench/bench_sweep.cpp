@@ -1,0 +1,267 @@
+#include "bench/bench_sweep.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+
+#include "rad/camera_view.hpp"
+#include "rad/image_error.hpp"
+#include "rad/path_tracer.hpp"
+#include "radiosity_pipeline.hpp"
+#include "scene_image_renderer.hpp"
+
+namespace rad {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+PipelineOptions pipeline_options(const std::string& scene, double patch_size, const EstimatorSetting& setting,
+                                 const BenchPlan& plan) {
+    PipelineOptions options;
+    options.scene.scene = scene;
+    options.scene.patch_size = patch_size;
+    options.form_factors.method = setting.method;
+    options.form_factors.rays = setting.rays;
+    options.solver.tolerance = plan.tolerance;
+    return options;
+}
+
+std::vector<glm::dvec3> run_to_end(SolverMethod method, const RadiositySystem& system,
+                                   const SolverOptions& options) {
+    const std::unique_ptr<Solver> solver = make_solver(method, system, options);
+    while (!solver->report().finished()) solver->step();
+    return {solver->solution().begin(), solver->solution().end()};
+}
+
+// The exact solution of these form factors: a direct solve where it is affordable, else Gauss-Seidel to a
+// residual of 1e-12 (the same system, so the same answer to rounding). Not CG, which solves the
+// reciprocity-symmetrized system and so answers slightly differently for estimated form factors.
+std::vector<glm::dvec3> converged_solution(const RadiositySystem& system, std::size_t patches,
+                                           const BenchPlan& plan) {
+    SolverOptions options;
+    options.tolerance = 1e-12;
+    options.max_steps = 1'000'000;
+    const bool direct = patches <= plan.direct_max_patches;
+    return run_to_end(direct ? SolverMethod::direct : SolverMethod::gauss_seidel, system, options);
+}
+
+// Patch radiosity of the path tracer on this mesh, and its noise in the norm of relative_rms_difference.
+struct PatchReference {
+    std::vector<glm::dvec3> radiosity;
+    double noise = 0.0;
+    double seconds = 0.0;
+    int paths_per_patch = 0;
+};
+
+PatchReference patch_reference(const LoadedScene& loaded, const BenchPlan& plan) {
+    PatchReference reference;
+    const std::size_t n = loaded.patches.size();
+    reference.paths_per_patch = static_cast<int>(
+        std::max<std::size_t>(plan.min_paths_per_patch, plan.reference_paths / std::max<std::size_t>(n, 1)));
+    const PathTracer tracer(loaded.scene, loaded.patches);
+    PathTracerStats stats;
+    const std::vector<Estimate> estimates = tracer.patch_radiosity(reference.paths_per_patch, &stats);
+    std::vector<glm::dvec3> errors;
+    for (const Estimate& e : estimates) {
+        reference.radiosity.push_back(e.mean);
+        errors.push_back(e.mean + e.standard_error);
+    }
+    reference.noise = relative_rms_difference(loaded.patches, errors, reference.radiosity);
+    reference.seconds = stats.seconds;
+    return reference;
+}
+
+ImageView view_of(const RadianceImage& image) {
+    return {image.width, image.height, image.pixels};
+}
+ImageView view_of(const ReferenceImage& image) {
+    return {image.width, image.height, image.pixels};
+}
+
+class SceneSweep {
+  public:
+    SceneSweep(const std::string& scene, const BenchPlan& plan, BenchResults& results,
+               const std::function<void(const std::string&)>& log)
+        : scene_(scene), plan_(plan), results_(results), log_(log) {}
+
+    void run() {
+        const LoadedScene base = load_and_mesh({scene_, 0.0});
+        default_size_ = base.patch_size;
+        camera_ = scene_camera(base.scene);
+        reference_image_ =
+            render_reference(base, plan_.image_size, plan_.reference_spp, plan_.reference_spp * 7919);
+        results_.notes.push_back(scene_ + ": reference image " + std::to_string(plan_.image_size) + "² at " +
+                                 std::to_string(plan_.reference_spp) + " paths per pixel, " +
+                                 format("%.1f s", reference_image_.stats.seconds));
+        // Radiosity is set beside the path tracer at the default mesh, or the one nearest it.
+        const auto nearest_default = std::min_element(
+            plan_.size_factors.begin(), plan_.size_factors.end(),
+            [](double a, double b) { return std::abs(std::log(a)) < std::abs(std::log(b)); });
+        for (double factor : plan_.size_factors)
+            run_level(factor * default_size_, factor == *nearest_default);
+    }
+
+  private:
+    ReferenceImage render_reference(const LoadedScene& loaded, int size, int spp, std::uint64_t seed) const {
+        PathTracerOptions options;
+        options.seed = seed;
+        return PathTracer(loaded.scene, loaded.patches, options).render(camera_, size, size, spp);
+    }
+
+    void run_level(double patch_size, bool is_default_size) {
+        std::optional<PatchReference> reference;
+        for (std::size_t e = 0; e < plan_.estimators.size(); ++e) {
+            const EstimatorSetting& setting = plan_.estimators[e];
+            RadiosityPipeline pipeline(pipeline_options(scene_, patch_size, setting, plan_));
+            const std::size_t n = pipeline.loaded().patches.size();
+            if (setting.method == FormFactorMethod::analytic && n > plan_.analytic_max_patches) continue;
+            if (!reference) {
+                reference = patch_reference(pipeline.loaded(), plan_);
+                results_.notes.push_back(
+                    scene_ + format(": patch reference at patch size %.4g, ", patch_size) +
+                    std::to_string(n) + " patches × " + std::to_string(reference->paths_per_patch) +
+                    format(" paths, %.1f s", reference->seconds) +
+                    format(", noise %.2f %%", 100.0 * reference->noise));
+            }
+            pipeline.prepare();
+            const std::vector<glm::dvec3> converged = converged_solution(pipeline.system(), n, plan_);
+            const bool all_solvers = e == 0;
+            for (std::size_t s = 0; s < (all_solvers ? plan_.solvers.size() : 1); ++s) {
+                const SolverMethod method = plan_.solvers[s];
+                if (method == SolverMethod::direct && n > plan_.direct_max_patches) continue;
+                BenchRow row = run_solver(pipeline, method, setting, *reference, converged);
+                row.patch_size = patch_size;
+                log_(format("%8.3f s  ", row.seconds()) + row.scene + "  " + std::to_string(row.patches) +
+                     " patches  " + row.estimator + "  " + row.solver +
+                     format("  total error %.2f %%", 100 * row.total_error) +
+                     format("  image error %.2f %%", 100 * row.image_error));
+                results_.rows.push_back(row);
+                if (is_default_size && e == 0 && s == 0) keep_images();
+                if (is_default_size && e == 0 && s == 0 && scene_ == plan_.scenes.front()) {
+                    compare_with_path_tracer(pipeline, row);
+                }
+            }
+        }
+    }
+
+    BenchRow run_solver(RadiosityPipeline& pipeline, SolverMethod method, const EstimatorSetting& setting,
+                        const PatchReference& reference, const std::vector<glm::dvec3>& converged) {
+        SolverCommandOptions command;
+        command.method = std::string(solver_method_name(method));
+        command.tolerance = plan_.tolerance;
+        const std::size_t n = pipeline.loaded().patches.size();
+        const auto start = std::chrono::steady_clock::now();
+        pipeline.restart_solver(method, solver_options(command, n));
+        const StepReport& report = pipeline.solve();
+        BenchRow row;
+        row.solve_seconds = seconds_since(start);
+        row.scene = scene_;
+        row.patches = n;
+        row.estimator = estimator_label(setting);
+        row.solver = command.method;
+        row.steps = report.step;
+        row.converged = report.status == SolverStatus::converged;
+        row.mesh_seconds = pipeline.seconds().mesh;
+        row.form_factor_seconds = pipeline.seconds().form_factors;
+        const std::span<const glm::dvec3> solution = pipeline.solver().solution();
+        row.solver_error = relative_rms_difference(pipeline.loaded().patches, solution, converged);
+        // The path tracer averages over whole patches, covered parts included.
+        const std::vector<glm::dvec3> whole =
+            whole_patch_radiosity(pipeline.system(), pipeline.loaded().patches, solution);
+        row.total_error = relative_rms_difference(pipeline.loaded().patches, whole, reference.radiosity);
+        row.reference_noise = reference.noise;
+        const auto render_start = std::chrono::steady_clock::now();
+        const RadianceImage image =
+            SceneImageRenderer(pipeline, false).render(camera_, plan_.image_size, plan_.image_size);
+        row.render_seconds = seconds_since(render_start);
+        row.image_error = block_relative_error(view_of(image), view_of(reference_image_));
+        last_image_ = image;
+        return row;
+    }
+
+    // The default run's image and the path tracer's, for a person to compare.
+    void keep_images() {
+        const std::string name = scene_.substr(scene_.find(':') + 1);
+        results_.images.push_back({name + "-radiosity.pfm", last_image_});
+        results_.images.push_back(
+            {name + "-path-traced.pfm", {reference_image_.width, reference_image_.height, reference_image_.pixels}});
+    }
+
+    // The path tracer's error at `spp` paths per pixel: against the reference at the reference's size,
+    // else against a second image of other seeds (both unbiased, so their block differences are noise, and
+    // one image's error is the difference over √2).
+    double path_tracer_error(const ReferenceImage& image, const LoadedScene& loaded, int size,
+                             int spp) const {
+        if (size == plan_.image_size) return block_relative_error(view_of(image), view_of(reference_image_));
+        const ReferenceImage twin = render_reference(loaded, size, spp, 1'000'003ull * spp + 17);
+        return block_relative_error(view_of(image), view_of(twin)) / std::sqrt(2.0);
+    }
+
+    void compare_with_path_tracer(const RadiosityPipeline& pipeline, const BenchRow& row) {
+        int spp = 1;
+        for (int size : plan_.comparison_sizes) {
+            PathTracerComparison c;
+            c.scene = scene_;
+            c.image_size = size;
+            c.radiosity_image_error = row.image_error;
+            const SceneImageRenderer renderer(pipeline, false);
+            auto start = std::chrono::steady_clock::now();
+            renderer.render(camera_, size, size);
+            c.radiosity_first_seconds = row.seconds() + seconds_since(start);
+            Camera moved = camera_;
+            moved.eye += 0.05 * (camera_.target - camera_.eye);
+            start = std::chrono::steady_clock::now();
+            renderer.render(moved, size, size);
+            c.radiosity_further_seconds = seconds_since(start);
+            for (; spp <= plan_.comparison_max_spp; spp *= 2) {
+                const ReferenceImage image = render_reference(pipeline.loaded(), size, spp, spp);
+                c.path_tracer_spp = spp;
+                c.path_tracer_seconds = image.stats.seconds;
+                c.path_tracer_error = path_tracer_error(image, pipeline.loaded(), size, spp);
+                if (c.path_tracer_error <= c.radiosity_image_error) {
+                    c.path_tracer_reached = true;
+                    break;
+                }
+            }
+            spp = std::max(1, spp / 2);  // a larger image needs about as many paths per pixel: start near
+            log_(format("path tracer at %.0f²: ", size) + std::to_string(c.path_tracer_spp) +
+                 format(" spp, %.2f s", c.path_tracer_seconds));
+            results_.comparisons.push_back(c);
+        }
+    }
+
+    std::string scene_;
+    const BenchPlan& plan_;
+    BenchResults& results_;
+    const std::function<void(const std::string&)>& log_;
+    double default_size_ = 0.0;
+    Camera camera_;
+    ReferenceImage reference_image_;
+    RadianceImage last_image_;  // of the last run
+};
+
+}  // namespace
+
+std::string estimator_label(const EstimatorSetting& setting) {
+    return std::string(setting.method == FormFactorMethod::analytic ? "analytic " : "hemisphere ") +
+           std::to_string(setting.rays);
+}
+
+void run_bench_scene(const std::string& scene, const BenchPlan& plan, BenchResults& results,
+                     const std::function<void(const std::string&)>& log) {
+    SceneSweep(scene, plan, results, log).run();
+}
+
+}  // namespace rad
