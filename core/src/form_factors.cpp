@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "form_factors_analytic.hpp"
+#include "form_factors_coverage.hpp"
 #include "form_factors_diagnostics.hpp"
 #include "form_factors_exposure.hpp"
 #include "form_factors_hemisphere.hpp"
@@ -55,13 +56,16 @@ FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactor
     if (progress) progress->begin("form factors", patches.size());
     RowStats stats;
     FormFactorMatrix matrix;
-    std::vector<double> covered(options.method == FormFactorMethod::hemisphere ? patches.size() : 0, 0.0);
+    std::vector<double> covered(patches.size(), 0.0);
     if (patches.size() > 0) {
         const RayScene scene(patches);
         const RowFunction row = options.method == FormFactorMethod::hemisphere
                                     ? hemisphere_rows(patches, scene, rays, options.seed, covered)
                                     : analytic_rows(patches, scene, rays, options.seed);
         matrix = assemble_rows(patches.size(), row, stats, progress);
+        // The analytic rows' shadow rays do not tell covered points apart; probe every patch (a small cost
+        // beside its pairs).
+        if (options.method == FormFactorMethod::analytic) measure_coverage(patches, scene, options.seed, covered);
     }
 
     const FormFactorDiagnostics estimate = diagnose(matrix, patches);

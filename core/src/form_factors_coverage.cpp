@@ -1,5 +1,7 @@
 #include "form_factors_coverage.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -62,6 +64,14 @@ double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint3
         if (inside) covered += weights[k];
     }
     return total > 0.0 ? covered / total : 0.0;
+}
+
+void measure_coverage(const PatchMesh& patches, const RayScene& scene, std::uint64_t seed,
+                      std::vector<double>& covered) {
+    const double offset = ray_offset(patches);
+    tbb::parallel_for(std::size_t(0), patches.size(), [&](std::size_t i) {
+        covered[i] = covered_share(patches, scene, static_cast<std::uint32_t>(i), seed, offset);
+    });
 }
 
 }  // namespace rad

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "rad/embree_scene.hpp"
 #include "rad/patches.hpp"
@@ -16,5 +17,9 @@ double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint3
                      double offset);
 
 inline constexpr int kCoverageProbes = 256;
+
+// covered[i] = covered_share of every patch i, on all cores.
+void measure_coverage(const PatchMesh& patches, const RayScene& scene, std::uint64_t seed,
+                      std::vector<double>& covered);
 
 }  // namespace rad

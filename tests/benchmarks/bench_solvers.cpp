@@ -144,6 +144,12 @@ void BM_SolverStep(benchmark::State& state, const BenchScene& (*scene_of)(), Sol
     const Accuracy a = accuracy(scene, method);
     state.counters["patches"] = static_cast<double>(scene.system.size());
     state.counters["nonzeros"] = static_cast<double>(scene.system.form_factors.nonzeros());
+    // One sweep touches every nonzero once (jacobi, gauss-seidel, cg): the time per nonzero per step.
+    if (method != SolverMethod::southwell && method != SolverMethod::direct) {
+        state.counters["s_per_nonzero"] =
+            benchmark::Counter(static_cast<double>(scene.system.form_factors.nonzeros()),
+                               benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    }
     state.counters["steps_to_1pct"] = a.steps_to_1;
     state.counters["steps_to_0.1pct"] = a.steps_to_01;
     state.counters["s_to_1pct"] = a.seconds_to_1;

@@ -46,7 +46,7 @@ struct FormFactorReport {
     std::size_t nonzeros = 0;
     std::uint64_t rays = 0;
     double escaped_ray_fraction = 0.0;  // rays that left the scene (hemisphere)
-    // The share of the patches' area that other geometry covers (hemisphere; FormFactorMatrix::exposed).
+    // The share of the patches' area that other geometry covers (FormFactorMatrix::exposed).
     double covered_area_fraction = 0.0;
     // Of the returned matrix:
     double max_reciprocity_error = 0.0;  // max |A_i F_ij - A_j F_ji| / max(A_i F_ij, A_j F_ji)
