@@ -3,6 +3,7 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <memory>
@@ -51,7 +52,11 @@ double ray_offset(const PatchMesh& patches) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    return patches.points.empty() ? 0.0 : kRayOffsetFraction * glm::length(hi - lo);
+    if (patches.points.empty()) return 0.0;
+    const glm::dvec3 magnitude = glm::max(glm::abs(lo), glm::abs(hi));
+    const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
+    return std::max(kRayOffsetFraction * glm::length(hi - lo),
+                    kRayOffsetUlps * std::numeric_limits<float>::epsilon() * largest);
 }
 
 void hemisphere_rays(const PatchMesh& patches, std::uint32_t patch, std::uint64_t seed, double offset,

@@ -15,9 +15,13 @@ namespace rad {
 // 8 x 8 patches per unit square are within 0.5 % (tests/test_form_factors_hemisphere.cpp).
 inline constexpr int kDefaultHemisphereRays = 4096;
 
-// Rays start this share of the scene's bounding-box diagonal off their patch, along its normal, so they do
-// not hit the patch they leave (Embree works in float: about 100 float steps at the scene's far corner).
-inline constexpr double kRayOffsetFraction = 1e-5;
+// Rays start off their patch, along its normal, so that they do not hit the patch they leave: Embree works in
+// float. The offset is the larger of kRayOffsetFraction of the scene's bounding-box diagonal and
+// kRayOffsetUlps float steps of the scene's largest coordinate (for a scene far from the origin, where float
+// steps are coarse). Surfaces that face each other closer than the offset do not see each other, so it is
+// kept small: 3.8e-6 of the size of a unit cube at the origin, which plates 1e-5 apart still resolve.
+inline constexpr double kRayOffsetFraction = 2e-6;
+inline constexpr double kRayOffsetUlps = 32.0;
 
 double ray_offset(const PatchMesh& patches);
 

@@ -2,8 +2,10 @@
 
 #include <OpenMesh/Core/System/omstream.hh>
 #include <glm/geometric.hpp>
+#include <optional>
 #include <unordered_map>
 
+#include "coplanar_emitters.hpp"
 #include "rad/error.hpp"
 #include "rad/polygon.hpp"
 
@@ -83,7 +85,10 @@ double scene_size_squared(const PolygonSoup& soup) {
 
 }  // namespace
 
-Scene build_scene(const PolygonSoup& soup) {
+Scene build_scene(const PolygonSoup& input) {
+    std::vector<std::string> lift_warnings;
+    const std::optional<PolygonSoup> lifted = lift_coplanar_emitters(input, lift_warnings);
+    const PolygonSoup& soup = lifted ? *lifted : input;
     const double min_area = kZeroAreaFraction * scene_size_squared(soup);
     std::vector<SurfaceBuilder> builders(soup.groups.size(), SurfaceBuilder(soup));
     std::size_t dropped = 0;
@@ -116,6 +121,7 @@ Scene build_scene(const PolygonSoup& soup) {
         scene.warnings.push_back(soup.source + ": dropped " + std::to_string(dropped) +
                                  " face(s) with zero area or fewer than three distinct corners");
     }
+    scene.warnings.insert(scene.warnings.end(), lift_warnings.begin(), lift_warnings.end());
     if (scene.surfaces.empty()) throw InputError(soup.source + ": the scene has no faces with area");
     if (!has_emitter(scene)) {
         scene.warnings.push_back(soup.source + ": no material emits light (Ke), so the scene will be black");

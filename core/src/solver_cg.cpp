@@ -2,12 +2,17 @@
 // (A/ρ − A F) B = A E / ρ, and A_i F_ij = A_j F_ji (reciprocity) makes that matrix symmetric; with ρ < 1
 // and rows summing to at most 1 it is diagonally dominant, hence positive definite, which suits high albedo
 // where the Jacobi-like methods crawl. Real form factors are reciprocal only approximately, so the solver
-// uses S_ij = (A_i F_ij + A_j F_ji) / 2 off the diagonal and sets S_ii so that each row keeps its sum
+// uses for S_ij, off the diagonal, a weighted mean of the pair's two estimates of the exchanged energy,
+// S_ij = (A_j · A_i F_ij + A_i · A_j F_ji) / (A_i + A_j), and sets S_ii so that each row keeps its sum
 // A_i Σ_j F_ij: the light a patch sends into the scene is unchanged, the matrix stays diagonally dominant,
-// and a closed scene keeps its exact furnace answer. CG thus solves the reciprocity-symmetrized system and
-// agrees with the other methods to within the form factors' reciprocity error. Patches that do not reflect
-// a channel (ρ = 0) keep B = E there and drop out of it. Eigen's ConjugateGradient cannot stop after one
-// iteration and resume, so the iteration is written out here; Eigen does the sparse and vector algebra.
+// and a closed scene keeps its exact furnace answer. The weights are inverse variances: a hemisphere
+// estimate of A_i F_ij from N rays has variance about A_i · A_i F_ij / N, so the smaller patch's estimate is
+// the better one. For equal areas this is the plain mean; for a tiny patch beside a huge one, whose rays
+// find the huge one while the huge one's rays miss it (F_ji = 0), it keeps the tiny patch's estimate
+// instead of halving it. CG thus solves the reciprocity-symmetrized system and agrees with the other
+// methods to within the form factors' reciprocity error. Patches that do not reflect a channel (ρ = 0) keep
+// B = E there and drop out of it. Eigen's ConjugateGradient cannot stop after one iteration and resume, so
+// the iteration is written out here; Eigen does the sparse and vector algebra.
 #include <Eigen/Dense>
 
 #include "eigen_form_factors.hpp"
@@ -32,7 +37,14 @@ Eigen::SparseMatrix<double> symmetrized_area_form_factors(const RadiositySystem&
     Eigen::SparseMatrix<double> area_f = EigenFormFactors(system.form_factors).rows().cast<double>();
     area_f = area.asDiagonal() * area_f;
     const Eigen::SparseMatrix<double> transposed = area_f.transpose();
-    Eigen::SparseMatrix<double> symmetric = 0.5 * (area_f + transposed);
+    // (A_j · A_i F_ij + A_i · A_j F_ji) / (A_i + A_j)
+    Eigen::SparseMatrix<double> symmetric = area_f * area.asDiagonal();
+    symmetric += area.asDiagonal() * transposed;
+    for (Eigen::Index j = 0; j < symmetric.outerSize(); ++j) {
+        for (Eigen::SparseMatrix<double>::InnerIterator it(symmetric, j); it; ++it) {
+            it.valueRef() /= area(it.row()) + area(it.col());
+        }
+    }
     const Eigen::VectorXd lost_row_sum =
         area_f * Eigen::VectorXd::Ones(n) - symmetric * Eigen::VectorXd::Ones(n);
     Eigen::SparseMatrix<double> diagonal(n, n);

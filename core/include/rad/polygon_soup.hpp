@@ -31,7 +31,9 @@ struct PolygonSoup {
 
 // One surface per group that has faces. Zero-area polygons are dropped (and counted in a warning); polygons
 // that are not planar and convex are triangulated; an edge that OpenMesh cannot take (non-manifold) gets
-// its own copy of the vertices. Throws InputError when nothing with area is left.
+// its own copy of the vertices. An emitting polygon that lies in the plane of a non-emitting one, facing the
+// same way and overlapping it, is moved a thousandth of the scene's diagonal in front of it, with a warning
+// (core/src/coplanar_emitters.hpp). Throws InputError when nothing with area is left.
 Scene build_scene(const PolygonSoup& soup);
 
 }  // namespace rad
