@@ -9,12 +9,12 @@ namespace rad {
 namespace {
 
 class Stopwatch {
-public:
+  public:
     double seconds() const {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     }
 
-private:
+  private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
@@ -39,11 +39,13 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
 void RadiosityPipeline::prepare(Progress* progress) {
     if (solver_) return;
     const Stopwatch clock;
-    FormFactorMatrix form_factors = compute_form_factors(
-        loaded_.patches, form_factor_options_for(options_.form_factors, loaded_), &form_factor_report_, progress);
+    FormFactorMatrix form_factors =
+        compute_form_factors(loaded_.patches, form_factor_options_for(options_.form_factors, loaded_),
+                             &form_factor_report_, progress);
     ++work_.form_factor_passes;
     seconds_.form_factors = clock.seconds();
     system_.emplace(make_radiosity_system(loaded_.scene, loaded_.patches, std::move(form_factors)));
+    if (automatic_method(options_.solver)) method_ = recommended_method(*system_, solver_options_);
     solver_ = make_solver(method_, *system_, solver_options_);
 }
 

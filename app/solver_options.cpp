@@ -7,7 +7,7 @@ namespace rad {
 namespace {
 
 std::vector<std::string> method_names() {
-    std::vector<std::string> names;
+    std::vector<std::string> names{"auto"};
     for (SolverMethod m : all_solver_methods()) names.emplace_back(solver_method_name(m));
     return names;
 }
@@ -18,8 +18,9 @@ void add_solver_options(CLI::App& command, SolverCommandOptions& options) {
     command
         .add_option(
             "--solver", options.method,
-            "Solver: jacobi (one bounce per step), gauss-seidel, southwell (progressive shooting), cg "
-            "(conjugate gradients, for high albedo) or direct (LU, the reference for small scenes)")
+            "Solver: auto (jacobi, or cg when jacobi would need over half of --bounces steps: high albedo), "
+            "jacobi (one bounce per step), gauss-seidel, southwell (progressive shooting), cg (conjugate "
+            "gradients, for high albedo) or direct (LU, the reference for small scenes)")
         ->check(CLI::IsMember(method_names()))
         ->capture_default_str();
     command
@@ -45,7 +46,11 @@ void add_solver_options(CLI::App& command, SolverCommandOptions& options) {
 }
 
 SolverMethod solver_method(const SolverCommandOptions& options) {
-    return parse_solver_method(options.method);
+    return automatic_method(options) ? SolverMethod::jacobi : parse_solver_method(options.method);
+}
+
+bool automatic_method(const SolverCommandOptions& options) {
+    return options.method == "auto";
 }
 
 SolverOptions solver_options(const SolverCommandOptions& options, std::size_t patches) {

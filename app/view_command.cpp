@@ -12,6 +12,8 @@ namespace {
 constexpr int kMaxWindowSide = 16384;
 
 void add_viewer_options(CLI::App& command, ViewerOptions& options) {
+    // The viewer steps bounces: jacobi unless asked otherwise (the panel switches methods).
+    options.pipeline.solver.method = "jacobi";
     add_pipeline_options(command, options.pipeline);
     command.add_option("--width", options.width, "Window width in pixels")
         ->check(CLI::Range(1, kMaxWindowSide))

@@ -143,9 +143,9 @@ INSTANTIATE_TEST_SUITE_P(Estimators, BoxOnFloor,
 // Seams between patches: a closed room lets no ray out, so every hemisphere row of assets/hard/no_emitter.obj
 // must sum to 1. At 16 x 16 patches a face, one ray of 6.3 million meets the ceiling exactly on the edge
 // shared by two of its patches and passes between them (Embree's default intersection test is not
-// watertight): a leak of 1/4096 of that row. Setting RTC_SCENE_FLAG_ROBUST on the scene in
-// core/src/embree_scene.cpp closes it (measured: no ray lost); enable this test with that change.
-TEST(Seams, DISABLED_NoRayPassesBetweenTwoPatchesOfAClosedRoom) {
+// watertight): a leak of 1/4096 of that row. RTC_SCENE_FLAG_ROBUST on the scene (core/src/embree_scene.cpp)
+// closes it.
+TEST(Seams, NoRayPassesBetweenTwoPatchesOfAClosedRoom) {
     const Scene scene = load_scene(asset("no_emitter.obj"));
     const PatchMesh mesh = test::mesh(scene, 1.0 / 16.0);
     FormFactorReport report;

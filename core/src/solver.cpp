@@ -1,5 +1,6 @@
 #include "rad/solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -74,6 +75,24 @@ std::string_view solver_status_name(SolverStatus status) {
             return "not converging";
     }
     return "unknown";
+}
+
+SolverMethod recommended_method(const RadiositySystem& system, const SolverOptions& options) {
+    const FormFactorMatrix& f = system.form_factors;
+    double weighted = 0.0, area = 0.0;
+    for (std::size_t i = 0; i < system.size(); ++i) {
+        double row_sum = 0.0;
+        for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k) row_sum += f.value[k];
+        const glm::dvec3& rho = system.reflectance[i];
+        weighted += system.area[i] * std::max({rho.x, rho.y, rho.z}) * row_sum;
+        area += system.area[i];
+    }
+    const double q = area > 0.0 ? weighted / area : 0.0;
+    if (!(q > 0.0) || options.tolerance <= 0.0 || options.max_steps == 0) return SolverMethod::jacobi;
+    if (q >= 1.0) return SolverMethod::conjugate_gradient;
+    const double jacobi_steps = std::log(options.tolerance) / std::log(q);
+    return jacobi_steps > 0.5 * static_cast<double>(options.max_steps) ? SolverMethod::conjugate_gradient
+                                                                       : SolverMethod::jacobi;
 }
 
 std::unique_ptr<Solver> make_solver(SolverMethod method, const RadiositySystem& system,

@@ -95,6 +95,12 @@ class Solver {
 // Throws InputError, naming --tol or --sor, for options out of range: callers check before long work.
 void check_solver_options(const SolverOptions& options);
 
+// What `--solver auto` picks: jacobi, whose steps are bounces, unless the light would need more than half
+// the step limit to settle, then cg. The jacobi step count is estimated from q, the area-weighted mean over
+// patches of ρ (largest channel) × row sum: the residual shrinks by about q per step, so it needs
+// ln(tolerance) / ln(q) steps. In a closed scene at ρ = 0.999 that is 11,500 steps; cg needs about 10.
+SolverMethod recommended_method(const RadiositySystem& system, const SolverOptions& options);
+
 // Throws InputError for options out of range (see check_solver_options) or a direct solve too large (naming
 // --solver), and std::invalid_argument for a malformed system (see validate_radiosity_system).
 std::unique_ptr<Solver> make_solver(SolverMethod method, const RadiositySystem& system,
