@@ -96,14 +96,18 @@ TEST(DisplayMesh, CornellWallsDoNotBleed) {
     }
 }
 
-// On a regular grid an interior vertex is the area-weighted mean of the four centroids around it, so a
-// radiosity linear in position comes back exactly there: L = B(x) / π.
-TEST(DisplayMesh, SmoothModeReproducesALinearFieldInside) {
+glm::dvec3 linear_field(const glm::dvec3& x) {
+    return glm::dvec3(1.0 + 2.0 * x.x + 3.0 * x.z, 5.0 - x.x, 2.0 + x.z);
+}
+
+// With the area-weighted average, an interior vertex of a regular grid is the mean of the four centroids
+// around it, so a radiosity linear in position comes back exactly there: L = B(x) / π.
+TEST(DisplayMesh, AveragingReproducesALinearFieldInside) {
     const PatchMesh mesh = mesh_of(make_cube(), 0.25);
-    const DisplayMesh d = build_display_mesh(mesh);
-    auto field = [](const glm::dvec3& x) {
-        return glm::dvec3(1.0 + 2.0 * x.x + 3.0 * x.z, 5.0 - x.x, 2.0 + x.z);
-    };
+    DisplayOptions options;
+    options.reconstruction = Reconstruction::average;
+    const DisplayMesh d = build_display_mesh(mesh, options);
+    auto field = linear_field;
     std::vector<glm::dvec3> b(mesh.size());
     for (std::size_t p = 0; p < mesh.size(); ++p) b[p] = field(mesh.patches[p].centroid);
     const std::vector<glm::vec3> radiance = vertex_radiance(d, b);
@@ -116,6 +120,41 @@ TEST(DisplayMesh, SmoothModeReproducesALinearFieldInside) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(radiance[v][c], expected[c], 1e-6) << "vertex " << v;
     }
     EXPECT_EQ(interior, 6u * 9u);  // a 3 x 3 block of interior corners on each face
+}
+
+// Linear reconstruction (the default) extrapolates each patch along its least-squares gradient, so a linear
+// field comes back exactly at every vertex, on the faces' borders and corners too, where averaging takes
+// the value half a patch inside.
+TEST(DisplayMesh, LinearReconstructionReproducesALinearFieldEverywhere) {
+    const PatchMesh mesh = mesh_of(make_cube(), 0.25);
+    const DisplayMesh d = build_display_mesh(mesh);
+    std::vector<glm::dvec3> b(mesh.size());
+    for (std::size_t p = 0; p < mesh.size(); ++p) b[p] = linear_field(mesh.patches[p].centroid);
+    const std::vector<glm::vec3> radiance = vertex_radiance(d, b);
+    ASSERT_EQ(d.vertex_count(), 6u * 25u);
+    for (std::size_t v = 0; v < d.vertex_count(); ++v) {
+        const glm::dvec3 expected = linear_field(glm::dvec3(d.positions[v])) / kPi;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(radiance[v][c], expected[c], 1e-5) << "vertex " << v;
+    }
+    // Averaging misses at a face's corner: it shows the one patch's centroid value there.
+    DisplayOptions average;
+    average.reconstruction = Reconstruction::average;
+    const std::vector<glm::vec3> averaged = vertex_radiance(build_display_mesh(mesh, average), b);
+    double worst = 0.0;
+    for (std::size_t v = 0; v < d.vertex_count(); ++v) {
+        worst = std::max(worst, std::abs(averaged[v].x - linear_field(glm::dvec3(d.positions[v])).x / kPi));
+    }
+    EXPECT_GT(worst, 0.1);
+}
+
+// Beside a step (a shadow edge) extrapolation can undershoot; the radiance shown is never negative.
+TEST(DisplayMesh, LinearReconstructionNeverShowsNegativeLight) {
+    const PatchMesh mesh = mesh_of(make_cube(), 0.125);
+    const DisplayMesh d = build_display_mesh(mesh);
+    std::vector<glm::dvec3> b(mesh.size());
+    for (std::size_t p = 0; p < mesh.size(); ++p)
+        b[p] = glm::dvec3(mesh.patches[p].centroid.x < 0.5 ? 0.0 : 10.0);
+    for (const glm::vec3& l : vertex_radiance(d, b)) EXPECT_GE(l.x, 0.0f);
 }
 
 TEST(DisplayMesh, FlatModeShowsEachPatchAsItIs) {

@@ -18,6 +18,9 @@ PipelineOptions cornell(double patch_size) {
     PipelineOptions options;
     options.scene.scene = "builtin:cornell";
     options.scene.patch_size = patch_size;
+    // The area-weighted average is linear in B, so the radiance of one bounce alone is the difference of
+    // two cumulative ones; linear reconstruction clamps negative extrapolations to 0, which is not.
+    options.display.reconstruction = Reconstruction::average;
     return options;
 }
 

@@ -1,9 +1,12 @@
 #include "rad/vertex_colours.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <stdexcept>
+
+#include "patch_gradients.hpp"
 
 namespace rad {
 
@@ -61,7 +64,9 @@ DisplayMesh build_flat(const PatchMesh& mesh) {
 // The display vertices at one corner point: its patches grouped by surface and normal.
 class CornerSplitter {
   public:
-    CornerSplitter(const PatchMesh& mesh, double cos_crease) : mesh_(mesh), cos_crease_(cos_crease) {}
+    // `gradients`: one per patch for linear reconstruction, or empty for the area-weighted average.
+    CornerSplitter(const PatchMesh& mesh, double cos_crease, std::vector<PatchGradient> gradients)
+        : mesh_(mesh), cos_crease_(cos_crease), gradients_(std::move(gradients)) {}
 
     // Groups the patches at `point` and appends one display vertex per group; returns each patch's vertex.
     void split(std::uint32_t point, std::span<const std::uint32_t> patches, DisplayMesh& display,
@@ -90,7 +95,7 @@ class CornerSplitter {
     };
 
     void add_vertex(std::uint32_t point, std::span<const std::uint32_t> patches, const Group& group,
-                    DisplayMesh& display, std::vector<std::uint32_t>& vertex_of_patch) const {
+                    DisplayMesh& display, std::vector<std::uint32_t>& vertex_of_patch) {
         const auto vertex = static_cast<std::uint32_t>(display.positions.size());
         double area = 0.0;
         glm::dvec3 normal(0.0);
@@ -99,27 +104,53 @@ class CornerSplitter {
             area += patch.area;
             normal += patch.area * patch.normal;
         }
+        weights_.clear();
         for (std::size_t a : group.members) {
-            display.weight_patch.push_back(patches[a]);
-            display.weight.push_back(static_cast<float>(mesh_.patches[patches[a]].area / area));
+            add_patch(patches[a], mesh_.patches[patches[a]].area / area, mesh_.points[point]);
             vertex_of_patch[a] = vertex;
+        }
+        std::sort(weights_.begin(), weights_.end());
+        for (std::size_t k = 0; k < weights_.size(); ++k) {
+            double sum = weights_[k].second;
+            while (k + 1 < weights_.size() && weights_[k + 1].first == weights_[k].first)
+                sum += weights_[++k].second;
+            display.weight_patch.push_back(weights_[k].first);
+            display.weight.push_back(static_cast<float>(sum));
         }
         display.weight_begin.push_back(static_cast<std::uint32_t>(display.weight.size()));
         display.positions.push_back(mesh_.positions[point]);
         display.normals.emplace_back(glm::length(normal) > 0.0 ? glm::normalize(normal) : group.normal);
     }
 
+    // Patch q's share `share` of the vertex at `position`: B_q, extrapolated along q's gradient when known.
+    void add_patch(std::uint32_t q, double share, const glm::dvec3& position) {
+        weights_.emplace_back(q, share);
+        if (gradients_.empty()) return;
+        const PatchGradient& g = gradients_[q];
+        const glm::dvec3 offset = position - mesh_.patches[q].centroid;
+        for (std::size_t k = 0; k < g.neighbour.size(); ++k) {
+            const double w = share * glm::dot(g.coefficient[k], offset);
+            weights_.emplace_back(g.neighbour[k], w);
+            weights_.emplace_back(q, -w);
+        }
+    }
+
     const PatchMesh& mesh_;
     double cos_crease_;
+    std::vector<PatchGradient> gradients_;
     std::vector<Group> groups_;
+    std::vector<std::pair<std::uint32_t, double>> weights_;
 };
 
-DisplayMesh build_smooth(const PatchMesh& mesh, double crease_angle_degrees) {
+DisplayMesh build_smooth(const PatchMesh& mesh, double crease_angle_degrees, Reconstruction reconstruction) {
     const PointPatches at = patches_at_points(mesh);
     DisplayMesh display;
     // The display vertex of each (patch, corner).
     std::vector<std::uint32_t> corner_vertex(4 * mesh.size());
-    CornerSplitter splitter(mesh, std::cos(crease_angle_degrees * std::numbers::pi / 180.0));
+    const double cos_crease = std::cos(crease_angle_degrees * std::numbers::pi / 180.0);
+    CornerSplitter splitter(mesh, cos_crease,
+                            reconstruction == Reconstruction::linear ? patch_gradients(mesh, cos_crease)
+                                                                     : std::vector<PatchGradient>{});
     std::vector<std::uint32_t> vertex_of_patch;
     for (std::uint32_t p = 0; p < mesh.points.size(); ++p) {
         const std::span<const std::uint32_t> patches(at.patch.data() + at.begin[p],
@@ -144,7 +175,7 @@ DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& o
     }
     DisplayMesh display = options.mode == ColourMode::flat
                               ? build_flat(patches)
-                              : build_smooth(patches, options.crease_angle_degrees);
+                              : build_smooth(patches, options.crease_angle_degrees, options.reconstruction);
     display.patch_count = patches.size();
     return display;
 }
@@ -162,7 +193,8 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
         for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
             sum += static_cast<double>(display.weight[k]) * radiosity[display.weight_patch[k]];
         }
-        radiance[v] = glm::vec3(sum / std::numbers::pi);
+        // Extrapolation can undershoot beside a sharp shadow edge; light is never negative.
+        radiance[v] = glm::vec3(glm::max(sum, glm::dvec3(0.0)) / std::numbers::pi);
     }
 }
 

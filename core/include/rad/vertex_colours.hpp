@@ -16,12 +16,21 @@ namespace rad {
 // flat:   every patch has its own corners and shows its own radiosity.
 enum class ColourMode { smooth, flat };
 
+// How smooth mode sets a vertex from the patches around it.
+// average: their area-weighted mean. A vertex on a surface's border then takes the value half a patch
+//          inside, which brightens concave edges and blurs shadow edges.
+// linear:  each patch's value extrapolated to the vertex along the patch's least-squares gradient (from
+//          its neighbours on the same smooth surface), then area-weighted; exact for a linear field at
+//          every vertex, borders included. Negative results are shown as 0.
+enum class Reconstruction { average, linear };
+
 struct DisplayOptions {
     ColourMode mode = ColourMode::smooth;
     // Patches meeting at a corner share a vertex when their normals differ by less than this. 30° keeps the
     // faces of boxes apart (90°) and joins the facets of a curved surface tessellated finer than 12 sides
     // per circle.
     double crease_angle_degrees = 30.0;
+    Reconstruction reconstruction = Reconstruction::linear;
 };
 
 // The geometry to draw, built once: a renderer uploads positions, normals and triangles once and, after
@@ -31,8 +40,8 @@ struct DisplayMesh {
     std::vector<glm::vec3> normals;             // unit, front side
     std::vector<glm::uvec3> triangles;          // counter-clockwise from the front
     std::vector<std::uint32_t> triangle_patch;  // the patch each triangle belongs to (for picking)
-    // Vertex v's colour is Σ weight[k] B[weight_patch[k]] / π over k in [weight_begin[v], weight_begin[v+1]);
-    // its weights sum to 1.
+    // Vertex v's colour is Σ weight[k] B[weight_patch[k]] / π over k in [weight_begin[v], weight_begin[v+1]),
+    // at least 0; its weights sum to 1.
     std::vector<std::uint32_t> weight_begin{0};
     std::vector<std::uint32_t> weight_patch;
     std::vector<float> weight;
