@@ -56,38 +56,17 @@ std::size_t count(const std::string& text, const std::string& word) {
     return n;
 }
 
-class QuickBench : public ::testing::Test {
-  protected:
-    static void SetUpTestSuite() {
-        dir_ = new test::TempDir;
-        result_ = new test::CommandResult(test::run_radiosity(
-            {"bench", "builtin:cornell", "--quick", "--out-dir", (dir_->path() / "bench").string()}));
-    }
-    static void TearDownTestSuite() {
-        delete result_;
-        delete dir_;
-    }
-    static std::filesystem::path out(const std::string& name) { return dir_->path() / "bench" / name; }
-
-    static test::TempDir* dir_;
-    static test::CommandResult* result_;
+// The quick sweep, run once (under ctest each test is a process of its own, and the sweep takes half a
+// minute under the sanitizers), then checked part by part.
+struct QuickBenchOutput {
+    std::filesystem::path folder;
+    std::vector<std::map<std::string, std::string>> rows;
+    std::string table, svg;
 };
 
-test::TempDir* QuickBench::dir_ = nullptr;
-test::CommandResult* QuickBench::result_ = nullptr;
-
-TEST_F(QuickBench, RunsAndWritesTheTableTheCsvAndThePlot) {
-    ASSERT_EQ(result_->status, 0) << result_->err;
-    EXPECT_TRUE(std::filesystem::exists(out("bench.md")));
-    EXPECT_TRUE(std::filesystem::exists(out("bench.csv")));
-    EXPECT_TRUE(std::filesystem::exists(out("bench.svg")));
-    EXPECT_EQ(read_text(out("bench.md")), result_->out.substr(0, read_text(out("bench.md")).size()));
-}
-
-TEST_F(QuickBench, CoversEverySolverEveryEstimatorAndTwoMeshes) {
-    ASSERT_EQ(result_->status, 0) << result_->err;
+void check_coverage(const QuickBenchOutput& out) {
     std::map<std::string, int> solvers, estimators, meshes;
-    for (const auto& row : read_csv(out("bench.csv"))) {
+    for (const auto& row : out.rows) {
         ++solvers[row.at("solver")];
         ++estimators[row.at("form_factors").substr(0, row.at("form_factors").find(' '))];
         ++meshes[row.at("patches")];
@@ -100,9 +79,8 @@ TEST_F(QuickBench, CoversEverySolverEveryEstimatorAndTwoMeshes) {
     EXPECT_EQ(meshes.size(), 2u);
 }
 
-TEST_F(QuickBench, SolverErrorsAreThoseOfTheirSolvers) {
-    ASSERT_EQ(result_->status, 0) << result_->err;
-    for (const auto& row : read_csv(out("bench.csv"))) {
+void check_solver_errors(const QuickBenchOutput& out) {
+    for (const auto& row : out.rows) {
         const std::string solver = row.at("solver");
         const double error = number(row, "solver_error");
         EXPECT_EQ(row.at("converged"), "1") << solver;
@@ -118,9 +96,8 @@ TEST_F(QuickBench, SolverErrorsAreThoseOfTheirSolvers) {
     }
 }
 
-TEST_F(QuickBench, TotalAndImageErrorsAreSmallAndTheReferenceIsQuieterThanThem) {
-    ASSERT_EQ(result_->status, 0) << result_->err;
-    for (const auto& row : read_csv(out("bench.csv"))) {
+void check_total_and_image_errors(const QuickBenchOutput& out) {
+    for (const auto& row : out.rows) {
         // Patch radiosity of the Cornell box against the path tracer, on meshes of 200 and 700 patches.
         EXPECT_GT(number(row, "total_error"), 0.0);
         EXPECT_LT(number(row, "total_error"), 0.05) << row.at("form_factors") << " " << row.at("solver");
@@ -132,20 +109,49 @@ TEST_F(QuickBench, TotalAndImageErrorsAreSmallAndTheReferenceIsQuieterThanThem) 
     }
 }
 
-TEST_F(QuickBench, ThePlotHasOneMarkerPerRunAndTheTableComparesWithThePathTracer) {
-    ASSERT_EQ(result_->status, 0) << result_->err;
-    const std::size_t runs = read_csv(out("bench.csv")).size();
-    const std::string svg = read_text(out("bench.svg"));
-    EXPECT_EQ(svg.rfind("<svg", 0), 0u);
-    // One marker per run, plus one per legend entry (series and the one scene).
+void check_plot_and_table(const QuickBenchOutput& out) {
+    EXPECT_EQ(out.svg.rfind("<svg", 0), 0u);
+    // One marker per run, plus one per legend entry (the series and the one scene).
     std::set<std::string> series;
-    for (const auto& row : read_csv(out("bench.csv"))) {
+    for (const auto& row : out.rows) {
         series.insert(row.at("solver") == "jacobi" ? row.at("form_factors") : row.at("solver"));
     }
-    EXPECT_EQ(count(svg, "<title>"), runs + series.size() + 1);
-    const std::string table = read_text(out("bench.md"));
-    EXPECT_NE(table.find("path tracer spp to that error"), std::string::npos);
-    EXPECT_NE(table.find("| builtin:cornell | 64² |"), std::string::npos);
+    EXPECT_EQ(count(out.svg, "<title>"), out.rows.size() + series.size() + 1);
+    EXPECT_NE(out.table.find("path tracer spp to that error"), std::string::npos);
+    EXPECT_NE(out.table.find("| builtin:cornell | 64² |"), std::string::npos);
+}
+
+TEST(QuickBench, RunsAndReportsWhatHoldsTogether) {
+    test::TempDir dir;
+    QuickBenchOutput out;
+    out.folder = dir.path() / "bench";
+    const test::CommandResult result =
+        test::run_radiosity({"bench", "builtin:cornell", "--quick", "--out-dir", out.folder.string()});
+    ASSERT_EQ(result.status, 0) << result.err;
+    for (const char* name :
+         {"bench.md", "bench.csv", "bench.svg", "cornell-radiosity.pfm", "cornell-path-traced.pfm"}) {
+        EXPECT_TRUE(std::filesystem::exists(out.folder / name)) << name;
+    }
+    out.rows = read_csv(out.folder / "bench.csv");
+    out.table = read_text(out.folder / "bench.md");
+    out.svg = read_text(out.folder / "bench.svg");
+    EXPECT_EQ(out.table, result.out.substr(0, out.table.size()));  // the table is what it printed
+    {
+        SCOPED_TRACE("every solver, both estimators, two meshes");
+        check_coverage(out);
+    }
+    {
+        SCOPED_TRACE("solver errors");
+        check_solver_errors(out);
+    }
+    {
+        SCOPED_TRACE("total and image errors");
+        check_total_and_image_errors(out);
+    }
+    {
+        SCOPED_TRACE("plot and table");
+        check_plot_and_table(out);
+    }
 }
 
 TEST(BenchCommand, AnOutputFolderThatCannotBeMadeIsAnOptionError) {

@@ -38,8 +38,8 @@ TEST(SolveCommand, WritesTheDesignSchemaForTheCube) {
     ASSERT_EQ(patches.size(), 24u);
     double area = 0.0, emitted = 0.0, leaving = 0.0;
     for (const json& p : patches) {
-        for (const char* key :
-             {"surface", "material", "area", "centroid", "normal", "reflectance", "emission", "radiosity"}) {
+        for (const char* key : {"surface", "material", "area", "exposed", "centroid", "normal", "reflectance",
+                                "emission", "radiosity"}) {
             ASSERT_TRUE(p.contains(key)) << key;
         }
         const double a = p.at("area").get<double>();
@@ -56,6 +56,7 @@ TEST(SolveCommand, WritesTheDesignSchemaForTheCube) {
         }
         EXPECT_EQ(p.at("material") == "emitter", p.at("surface") == "top");
         EXPECT_DOUBLE_EQ(a, 0.25);
+        EXPECT_DOUBLE_EQ(p.at("exposed").get<double>(), 1.0);  // nothing covers a face of the empty cube
         area += a;
         emitted += a * e[0];
         leaving += a * b[0];

@@ -32,6 +32,8 @@ json patch_json(const Scene& scene, const PatchMesh& patches, const RadiositySys
                 {"surface_index", patch.surface},
                 {"material", surface.material.name},
                 {"area", patch.area},
+                // The share other geometry does not cover; radiosity is that of this exposed part.
+                {"exposed", system.area[i] / patch.area},
                 {"centroid", triple(patch.centroid)},
                 {"normal", triple(patch.normal)},
                 {"reflectance", triple(system.reflectance[i])},
