@@ -67,11 +67,33 @@ TEST(RayScene, LongBatchesKeepTheirOrder) {
     for (int k = 0; k < 150; ++k) EXPECT_EQ(hits[k].patch, k % 3 == 0 ? 1u : 0u) << "ray " << k;
 }
 
-TEST(RayScene, NeedsTheSpareVertexForEmbreesWideLoads) {
-    PatchMesh mesh = two_squares();
-    mesh.positions.shrink_to_fit();
-    if (mesh.positions.capacity() > mesh.positions.size()) GTEST_SKIP() << "shrink_to_fit kept the capacity";
-    EXPECT_THROW(RayScene{mesh}, std::invalid_argument);
+// Embree sees the scene in its own normalized frame, so the same rays in a scene moved and scaled by any
+// factor meet the same patches at the same parameters t.
+TEST(RayScene, TheSameRaysInAMovedAndScaledSceneHitAlike) {
+    const PatchMesh mesh = two_squares();
+    PatchMesh moved = mesh;
+    const glm::dvec3 shift(1e4, -3e3, 7e2);
+    const double scale = 1e-3;
+    for (glm::dvec3& p : moved.points) p = p * scale + shift;
+    for (std::size_t i = 0; i < moved.points.size(); ++i) moved.positions[i] = glm::vec3(moved.points[i]);
+    const RayScene scene(mesh), moved_scene(moved);
+    std::vector<Ray> rays, moved_rays;
+    for (int k = 0; k < 400; ++k) {
+        // Grazing rays towards the squares' edges, where float rounding decides.
+        const double a = 0.01 * k;
+        const Ray ray{{0.5, 0.5, 0.5}, 0.0f, {std::cos(a), std::sin(3.0 * a), std::sin(a)}, 1e30f};
+        rays.push_back(ray);
+        moved_rays.push_back({ray.origin * scale + shift, 0.0f, ray.direction * scale, 1e30f});
+    }
+    std::vector<RayHit> hits(rays.size()), moved_hits(rays.size());
+    scene.intersect(rays, hits);
+    moved_scene.intersect(moved_rays, moved_hits);
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+        EXPECT_EQ(hits[k].patch, moved_hits[k].patch) << "ray " << k;
+        if (hits[k].patch != RayHit::kMissed) {
+            EXPECT_NEAR(hits[k].t, moved_hits[k].t, 1e-6f * hits[k].t) << "ray " << k;
+        }
+    }
 }
 
 TEST(RayScene, EmbreeErrorsBecomeExceptionsWithEmbreesMessage) {

@@ -2,6 +2,10 @@
 
 #include <embree3/rtcore.h>
 
+#include <glm/common.hpp>
+#include <limits>
+#include <vector>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -44,14 +48,17 @@ bool reaches_front(const RTCRayHit& hit) {
 // fast as rtcIntersect1 (bench_form_factors.cpp). The coherent-ray flag made both 2-3x slower on them.
 constexpr std::size_t kStreamSize = 64;
 
-void to_embree(const Ray& in, RTCRay& out) {
-    out.org_x = in.origin.x;
-    out.org_y = in.origin.y;
-    out.org_z = in.origin.z;
+// The ray in the normalized frame: o' = (o − centre) / scale and d' = d / scale keep every parameter t.
+void to_embree(const Ray& in, const glm::dvec3& centre, double inverse_scale, RTCRay& out) {
+    const glm::vec3 origin((in.origin - centre) * inverse_scale);
+    const glm::vec3 direction(in.direction * inverse_scale);
+    out.org_x = origin.x;
+    out.org_y = origin.y;
+    out.org_z = origin.z;
     out.tnear = in.tnear;
-    out.dir_x = in.direction.x;
-    out.dir_y = in.direction.y;
-    out.dir_z = in.direction.z;
+    out.dir_x = direction.x;
+    out.dir_y = direction.y;
+    out.dir_z = direction.z;
     out.time = 0.0f;
     out.tfar = in.tfar;
     out.mask = 0xffffffffu;
@@ -64,6 +71,8 @@ void to_embree(const Ray& in, RTCRay& out) {
 struct RayScene::Embree {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
+    // The corners in the normalized frame; one spare element, as Embree reads the last with a 16-byte load.
+    std::vector<glm::vec3> vertices;
     std::atomic<bool> failed{false};
     std::mutex mutex;
     std::string message;
@@ -92,11 +101,16 @@ struct RayScene::Embree {
 
 RayScene::RayScene(const PatchMesh& patches, const char* device_config)
     : embree_(std::make_unique<Embree>()) {
-    // Embree reads the last vertex with a 16-byte load, so the shared buffer needs one spare float3.
-    if (patches.positions.capacity() < patches.positions.size() + 1) {
-        throw std::invalid_argument("RayScene: PatchMesh::positions needs capacity for one more vertex");
-    }
     Embree& e = *embree_;
+    glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
+    for (const glm::dvec3& p : patches.points) low = glm::min(low, p), high = glm::max(high, p);
+    if (!patches.points.empty()) {
+        centre_ = 0.5 * (low + high);
+        const double extent = std::max({high.x - low.x, high.y - low.y, high.z - low.z});
+        if (extent > 0.0) inverse_scale_ = 1.0 / extent;
+    }
+    e.vertices.reserve(patches.points.size() + 1);
+    for (const glm::dvec3& p : patches.points) e.vertices.emplace_back((p - centre_) * inverse_scale_);
     e.device = rtcNewDevice(device_config);
     if (!e.device) {
         throw std::runtime_error(std::string("Embree: cannot create a device: ") +
@@ -112,8 +126,8 @@ RayScene::RayScene(const PatchMesh& patches, const char* device_config)
 
     RTCGeometry quads = rtcNewGeometry(e.device, RTC_GEOMETRY_TYPE_QUAD);
     e.throw_if_failed();
-    rtcSetSharedGeometryBuffer(quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, patches.positions.data(),
-                               0, sizeof(glm::vec3), patches.positions.size());
+    rtcSetSharedGeometryBuffer(quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, e.vertices.data(), 0,
+                               sizeof(glm::vec3), e.vertices.size());
     rtcSetSharedGeometryBuffer(quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, patches.corners.data(), 0,
                                sizeof(glm::uvec4), patches.corners.size());
     rtcCommitGeometry(quads);
@@ -133,7 +147,8 @@ void RayScene::occluded(std::span<const Ray> rays, std::span<std::uint8_t> block
     std::array<RTCRay, kStreamSize> stream;
     for (std::size_t first = 0; first < rays.size(); first += kStreamSize) {
         const std::size_t count = std::min(kStreamSize, rays.size() - first);
-        for (std::size_t k = 0; k < count; ++k) to_embree(rays[first + k], stream[k]);
+        for (std::size_t k = 0; k < count; ++k)
+            to_embree(rays[first + k], centre_, inverse_scale_, stream[k]);
         rtcOccluded1M(embree_->scene, &context, stream.data(), static_cast<unsigned>(count), sizeof(RTCRay));
         // Embree marks an occluded ray by setting its tfar to -inf.
         for (std::size_t k = 0; k < count; ++k) blocked[first + k] = stream[k].tfar < 0.0f ? 1 : 0;
@@ -149,7 +164,7 @@ void RayScene::intersect(std::span<const Ray> rays, std::span<RayHit> hits) cons
     for (std::size_t first = 0; first < rays.size(); first += kStreamSize) {
         const std::size_t count = std::min(kStreamSize, rays.size() - first);
         for (std::size_t k = 0; k < count; ++k) {
-            to_embree(rays[first + k], stream[k].ray);
+            to_embree(rays[first + k], centre_, inverse_scale_, stream[k].ray);
             stream[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
             stream[k].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         }

@@ -113,7 +113,7 @@ void append_shadow_rays(const ConvexPolygon& from, const glm::dvec3& from_normal
     for (std::size_t k = 0; k < count; ++k) {
         const glm::dvec3 a = point_on_convex_polygon(from.span(), strata[k]) + offset * from_normal;
         const glm::dvec3 b = point_on_convex_polygon(to.span(), strata[count + k]) + offset * to_normal;
-        rays.push_back(Ray{glm::vec3(a), 0.0f, glm::vec3(b - a), 1.0f});
+        rays.push_back(Ray{a, 0.0f, b - a, 1.0f});
     }
 }
 

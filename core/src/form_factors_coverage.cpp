@@ -50,7 +50,7 @@ double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint3
         for (int d = 0; d < kDirections; ++d) {
             Ray& probe = probes[k * kDirections + d];
             probe = origins[k];
-            probe.direction = glm::vec3(frame.to_world(local[d]));
+            probe.direction = frame.to_world(local[d]);
         }
     }
     scene.intersect(probes, hits);

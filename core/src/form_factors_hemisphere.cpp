@@ -87,9 +87,9 @@ void hemisphere_rays(const PatchMesh& patches, std::uint32_t patch, std::uint64_
             origin = quad.point(origins[k]);
             weights[k] = quad.jacobian(origins[k]) / p.area;
         }
-        rays[k].origin = glm::vec3(origin + lift);
+        rays[k].origin = origin + lift;
         rays[k].tnear = 0.0f;
-        rays[k].direction = glm::vec3(frame.to_world(cosine_direction(directions[k])));
+        rays[k].direction = frame.to_world(cosine_direction(directions[k]));
         rays[k].tfar = std::numeric_limits<float>::infinity();
     }
 }

@@ -42,7 +42,7 @@ class PinholeCamera {
         const double y = 1.0 - 2.0 * (py + jy) / height_;
         const glm::dvec3 direction =
             glm::normalize(forward_ + (x * aspect_ * tan_half_) * side_ + (y * tan_half_) * up_);
-        return Ray{glm::vec3(eye_), 0.0f, glm::vec3(direction), std::numeric_limits<float>::infinity()};
+        return Ray{eye_, 0.0f, direction, std::numeric_limits<float>::infinity()};
     }
 
   private:

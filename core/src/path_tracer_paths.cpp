@@ -83,15 +83,14 @@ void PathContext::sample_direct(std::uint32_t k, RandomStream& random, PathScrat
     const glm::dvec3 origin = path.point + offset_ * n_x;
     const glm::dvec3 target = light.point + offset_ * n_y;
     s.shadowed.push_back(k);
-    s.shadow_rays.push_back(Ray{glm::vec3(origin), 0.0f, glm::vec3(target - origin), 1.0f});
+    s.shadow_rays.push_back(Ray{origin, 0.0f, target - origin, 1.0f});
 }
 
 Ray PathContext::bounce_ray(const PathState& path, RandomStream& random) const {
     const glm::dvec3& n = patches_.patches[path.patch].normal;
     const glm::dvec2 u(random.uniform(), random.uniform());
     const glm::dvec3 direction = frame_around(n).to_world(cosine_direction(u));
-    return Ray{glm::vec3(path.point + offset_ * n), 0.0f, glm::vec3(direction),
-               std::numeric_limits<float>::infinity()};
+    return Ray{path.point + offset_ * n, 0.0f, direction, std::numeric_limits<float>::infinity()};
 }
 
 // The emission at `point` of `patch`, which the path's bounce reached, times the path's throughput and the

@@ -10,10 +10,12 @@
 namespace rad {
 
 // A ray segment: points origin + t * direction for t in [tnear, tfar]. The direction need not be unit.
+// Origin and direction are in double, as callers compute them: RayScene rounds them to float only after
+// moving them into the scene's own normalized frame, so a scene scaled by any factor traces the same rays.
 struct Ray {
-    glm::vec3 origin{0.0f};
+    glm::dvec3 origin{0.0};
     float tnear = 0.0f;
-    glm::vec3 direction{0.0f, 0.0f, 1.0f};
+    glm::dvec3 direction{0.0, 0.0, 1.0};
     float tfar = 1e30f;
 };
 
@@ -26,8 +28,12 @@ struct RayHit {
 };
 
 // The patches as an Embree BVH, for batched ray queries from any number of threads at once. This class is
-// the only code that sees Embree: its vertex and index buffers are the PatchMesh's own (shared, not
-// copied), so the PatchMesh must outlive it and stay unchanged. Embree's errors become std::runtime_error.
+// the only code that sees Embree. Embree works in float; its vertices are the patches' corners moved to the
+// bounding box's centre and divided by its largest extent, rounded to float from double, and rays are moved
+// the same way. So the float geometry, and every hit, does not depend on where the scene sits or how large
+// it is (a scene at 1e-3 or 1e4 times its size gives the same form factors). The index buffer is the
+// PatchMesh's own (shared), so the PatchMesh must outlive it and stay unchanged. Embree's errors become
+// std::runtime_error.
 class RayScene {
   public:
     // `device_config` is Embree's device configuration string (empty: Embree's defaults).
@@ -45,6 +51,8 @@ class RayScene {
   private:
     struct Embree;
     std::unique_ptr<Embree> embree_;
+    glm::dvec3 centre_{0.0};
+    double inverse_scale_ = 1.0;
 };
 
 }  // namespace rad

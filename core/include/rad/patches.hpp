@@ -22,8 +22,7 @@ struct Patch {
 // another patch's edge. Surfaces share no corners, so colours never bleed from one surface to the next.
 struct PatchMesh {
     std::vector<glm::dvec3> points;  // corner positions, double precision, for geometry
-    // The same corners in float, laid out for Embree and OpenGL to share without copies. Its capacity holds
-    // one element more than its size: Embree reads the last vertex with a 16-byte load.
+    // The same corners in float, as OpenGL draws them. (RayScene makes its own normalized float copy.)
     std::vector<glm::vec3> positions;
     // Corner indices per patch, counter-clockwise from the front. A triangle repeats its last corner
     // (c[3] == c[2]), which is how Embree's quad geometry takes triangles.
