@@ -75,7 +75,6 @@ TEST(RayScene, TheSameRaysInAMovedAndScaledSceneHitAlike) {
     const glm::dvec3 shift(1e4, -3e3, 7e2);
     const double scale = 1e-3;
     for (glm::dvec3& p : moved.points) p = p * scale + shift;
-    for (std::size_t i = 0; i < moved.points.size(); ++i) moved.positions[i] = glm::vec3(moved.points[i]);
     const RayScene scene(mesh), moved_scene(moved);
     std::vector<Ray> rays, moved_rays;
     for (int k = 0; k < 400; ++k) {

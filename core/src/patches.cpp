@@ -335,7 +335,7 @@ PatchMesh build_patches(const Scene& scene, const MeshingOptions& options) {
         SurfaceGridder(layouts[s], s, mesh).run();
         mesh.surface_begin.push_back(static_cast<std::uint32_t>(mesh.patches.size()));
     }
-    mesh.positions.reserve(mesh.points.size() + 1);
+    mesh.positions.reserve(mesh.points.size());
     for (const auto& p : mesh.points) mesh.positions.emplace_back(p);
     return mesh;
 }
