@@ -37,7 +37,7 @@ struct SurfaceLayout {
 };
 
 class EdgeClasses {
-public:
+  public:
     std::uint32_t add() {
         parent_.push_back(static_cast<std::uint32_t>(parent_.size()));
         return parent_.back();
@@ -48,12 +48,12 @@ public:
     }
     void unite(std::uint32_t a, std::uint32_t b) { parent_[find(a)] = find(b); }
 
-private:
+  private:
     std::vector<std::uint32_t> parent_;
 };
 
 class LayoutBuilder {
-public:
+  public:
     LayoutBuilder(const SurfaceMesh& mesh, double patch_size) : patch_size_(patch_size) {
         for (auto v : mesh.vertices()) layout_.vertex.push_back(to_glm(mesh.point(v)));
         for (auto f : mesh.faces()) add_face(mesh, f);
@@ -74,7 +74,7 @@ public:
         return std::move(layout_);
     }
 
-private:
+  private:
     void add_face(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle f) {
         std::vector<std::uint32_t> corners;
         std::vector<glm::dvec3> points;
@@ -143,7 +143,7 @@ double patch_count(const SurfaceLayout& layout) {
 
 // Emits one surface's patches into the PatchMesh, creating each corner once so the grid conforms.
 class SurfaceGridder {
-public:
+  public:
     SurfaceGridder(const SurfaceLayout& layout, std::uint32_t surface, PatchMesh& out)
         : layout_(layout),
           surface_(surface),
@@ -161,7 +161,7 @@ public:
         }
     }
 
-private:
+  private:
     std::uint32_t new_point(const glm::dvec3& p) {
         out_.points.push_back(p);
         return static_cast<std::uint32_t>(out_.points.size() - 1);
@@ -207,7 +207,8 @@ private:
                     at(i, j) = edge_point(e.edge[1], e.v[1], j);
                 } else {
                     const double u = double(i) / n, v = double(j) / m;
-                    at(i, j) = new_point((1 - u) * (1 - v) * a + u * (1 - v) * b + u * v * c + (1 - u) * v * d);
+                    at(i, j) =
+                        new_point((1 - u) * (1 - v) * a + u * (1 - v) * b + u * v * c + (1 - u) * v * d);
                 }
             }
         }
@@ -220,7 +221,8 @@ private:
 
     void grid_triangle(const Element& e) {
         const auto n = static_cast<std::uint32_t>(layout_.segments[e.edge[0]]);
-        const glm::dvec3 &a = layout_.vertex[e.v[0]], &b = layout_.vertex[e.v[1]], &c = layout_.vertex[e.v[2]];
+        const glm::dvec3 &a = layout_.vertex[e.v[0]], &b = layout_.vertex[e.v[1]],
+                         &c = layout_.vertex[e.v[2]];
         // Row j holds points i = 0 .. n - j, from edge v0-v2 (i = 0) to edge v1-v2 (i = n - j).
         std::vector<std::uint32_t> grid((n + 1) * (n + 2) / 2);
         std::vector<std::uint32_t> row_start(n + 1);
@@ -242,24 +244,15 @@ private:
         for (std::uint32_t j = 0; j < n; ++j) {
             for (std::uint32_t i = 0; i + j < n; ++i) {
                 add_patch({at(i, j), at(i + 1, j), at(i, j + 1), at(i, j + 1)}, e.normal);
-                if (i + j + 1 < n) add_patch({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), at(i, j + 1)}, e.normal);
+                if (i + j + 1 < n)
+                    add_patch({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), at(i, j + 1)}, e.normal);
             }
         }
     }
 
     void add_patch(const glm::uvec4& c, const glm::dvec3& normal) {
-        const glm::dvec3 &p0 = out_.points[c[0]], &p1 = out_.points[c[1]];
-        const glm::dvec3 &p2 = out_.points[c[2]], &p3 = out_.points[c[3]];
-        Patch patch;
-        patch.surface = surface_;
-        patch.normal = normal;
-        const double a012 = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
-        const double a023 = 0.5 * glm::length(glm::cross(p2 - p0, p3 - p0));
-        patch.area = a012 + a023;
-        patch.centroid = patch.area > 0.0 ? (a012 * (p0 + p1 + p2) + a023 * (p0 + p2 + p3)) / (3.0 * patch.area)
-                                          : (p0 + p1 + p2) / 3.0;
         out_.corners.push_back(c);
-        out_.patches.push_back(patch);
+        out_.patches.push_back(measure_patch(out_.points, c, surface_, normal));
     }
 
     const SurfaceLayout& layout_;
@@ -304,6 +297,21 @@ double patch_size_that_fits(const Scene& scene, double patch_size, double count,
 }
 
 }  // namespace
+
+Patch measure_patch(std::span<const glm::dvec3> points, const glm::uvec4& c, std::uint32_t surface,
+                    const glm::dvec3& normal) {
+    const glm::dvec3 &p0 = points[c[0]], &p1 = points[c[1]];
+    const glm::dvec3 &p2 = points[c[2]], &p3 = points[c[3]];
+    Patch patch;
+    patch.surface = surface;
+    patch.normal = normal;
+    const double a012 = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
+    const double a023 = 0.5 * glm::length(glm::cross(p2 - p0, p3 - p0));
+    patch.area = a012 + a023;
+    patch.centroid = patch.area > 0.0 ? (a012 * (p0 + p1 + p2) + a023 * (p0 + p2 + p3)) / (3.0 * patch.area)
+                                      : (p0 + p1 + p2) / 3.0;
+    return patch;
+}
 
 double default_patch_size(const Scene& scene) {
     const double extent = bounding_box(scene).largest_extent();

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <span>
 #include <vector>
 
 #include "rad/scene.hpp"
@@ -30,11 +31,22 @@ struct PatchMesh {
     std::vector<Patch> patches;
     // Patches of surface s are [surface_begin[s], surface_begin[s + 1]).
     std::vector<std::uint32_t> surface_begin;
+    // Where patches of different sizes meet (adaptive and hierarchical meshes), a corner of the smaller ones
+    // can lie inside an edge of the larger one: a T-vertex. Then `outline` lists each patch's whole boundary,
+    // its corners and the T-vertices on its edges, counter-clockwise; patch q's are
+    // [outline_begin[q], outline_begin[q + 1]). Both are empty for a conforming mesh, whose outlines are the
+    // corners.
+    std::vector<std::uint32_t> outline_begin;
+    std::vector<std::uint32_t> outline;
 
     std::size_t size() const { return patches.size(); }
     bool is_triangle(std::size_t patch) const { return corners[patch][3] == corners[patch][2]; }
     int corner_count(std::size_t patch) const { return is_triangle(patch) ? 3 : 4; }
 };
+
+// Area, centroid and the given normal of the planar patch with these corners (a triangle repeats c[2]).
+Patch measure_patch(std::span<const glm::dvec3> points, const glm::uvec4& corners, std::uint32_t surface,
+                    const glm::dvec3& normal);
 
 struct MeshingOptions {
     double patch_size = 0.0;  // largest patch edge in scene units; 0 picks default_patch_size
