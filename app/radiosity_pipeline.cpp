@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "form_factor_options.hpp"
+#include "rad/error.hpp"
 
 namespace rad {
 
@@ -24,13 +25,22 @@ void add_pipeline_options(CLI::App& command, PipelineOptions& options) {
     add_scene_options(command, options.scene);
     add_form_factor_options(command, options.form_factors);
     add_solver_options(command, options.solver);
+    add_subdivision_options(command, options.subdivision);
 }
 
 RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(options) {
+    subdivision_ = parse_subdivision(options.subdivision.method);
     method_ = solver_method(options.solver);
+    if (subdivision_ == Subdivision::hierarchical && !automatic_method(options.solver) &&
+        method_ != SolverMethod::jacobi) {
+        throw InputError("--solver " + options.solver.method +
+                         ": hierarchical radiosity gathers along its links by jacobi steps; use --solver jacobi "
+                         "or auto, or --subdivision uniform");
+    }
     check_solver_options(rad::solver_options(options.solver, 1));  // bad options fail before the long work
     const Stopwatch clock;
-    loaded_ = load_and_mesh(options.scene);
+    loaded_ = load_and_mesh(options.scene,
+                            subdivision_ == Subdivision::hierarchical ? kHierarchicalBaseScale : 1.0);
     display_ = build_display_mesh(loaded_.patches, options.display);
     seconds_.mesh = clock.seconds();
     solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
@@ -38,6 +48,35 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
 
 void RadiosityPipeline::prepare(Progress* progress) {
     if (solver_) return;
+    if (subdivision_ == Subdivision::hierarchical) return prepare_hierarchical(progress);
+    prepare_uniform(progress);
+}
+
+void RadiosityPipeline::use_patches(const PatchMesh& patches) {
+    patches_ = &patches;
+    display_ = build_display_mesh(patches, options_.display);
+    solver_options_ = rad::solver_options(options_.solver, patches.size());
+}
+
+void RadiosityPipeline::prepare_hierarchical(Progress* progress) {
+    const Stopwatch clock;
+    const HierarchicalOptions options =
+        hierarchical_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
+    hierarchy_ = build_hierarchical_system(loaded_.scene, loaded_.patches, options, &hierarchical_report_, progress);
+    ++work_.form_factor_passes;
+    seconds_.form_factors = clock.seconds();
+    form_factor_report_ = FormFactorReport{};
+    form_factor_report_.seconds = seconds_.form_factors;
+    form_factor_report_.memory_bytes = hierarchical_report_.memory_bytes;
+    form_factor_report_.nonzeros = hierarchical_report_.links;
+    form_factor_report_.rays = hierarchical_report_.rays;
+    use_patches(hierarchy_->leaf_patches);
+    system_.emplace(hierarchy_->leaf_system);
+    method_ = SolverMethod::jacobi;
+    solver_ = make_hierarchical_solver(*hierarchy_, solver_options_);
+}
+
+void RadiosityPipeline::prepare_uniform(Progress* progress) {
     const Stopwatch clock;
     FormFactorMatrix form_factors =
         compute_form_factors(loaded_.patches, form_factor_options_for(options_.form_factors, loaded_),
@@ -71,9 +110,19 @@ const StepReport& RadiosityPipeline::solve(Progress* progress) {
 
 void RadiosityPipeline::restart_solver(SolverMethod method, const SolverOptions& options) {
     prepare();
+    if (hierarchy_) {
+        solver_ = make_hierarchical_solver(*hierarchy_, options);
+        solver_options_ = options;
+        return;
+    }
     solver_ = make_solver(method, *system_, options);
     method_ = method;
     solver_options_ = options;
+}
+
+EnergyBalance RadiosityPipeline::energy_balance() const {
+    if (hierarchy_) return hierarchical_energy_balance(*hierarchy_, solver_->solution());
+    return rad::energy_balance(*system_, solver_->solution());
 }
 
 std::vector<glm::vec3> RadiosityPipeline::vertex_radiance() const {

@@ -12,6 +12,7 @@
 #include "rad/vertex_colours.hpp"
 #include "scene_options.hpp"
 #include "solver_options.hpp"
+#include "subdivision_options.hpp"
 
 namespace rad {
 
@@ -20,6 +21,7 @@ struct PipelineOptions {
     SceneOptions scene;
     FormFactorOptions form_factors;
     SolverCommandOptions solver;
+    SubdivisionOptions subdivision;
     DisplayOptions display;
 };
 
@@ -41,10 +43,12 @@ struct StageSeconds {
 // caller (or to the end), and the display mesh built once. The viewer steps it; the commands run it through.
 class RadiosityPipeline {
 public:
-    // Loads and meshes the scene. Throws InputError for bad input or options.
+    // Loads and meshes the scene (for hierarchical radiosity, into base patches). Throws InputError for bad
+    // input or options.
     explicit RadiosityPipeline(const PipelineOptions& options);
 
-    // Runs the form-factor pass and makes the solver; does nothing the second time.
+    // Runs the form-factor pass (adaptive: the passes; hierarchical: builds the links) and makes the solver;
+    // does nothing the second time. Adaptive and hierarchical subdivision change patches() and display().
     void prepare(Progress* progress = nullptr);
     // One solver step (prepares first if needed).
     StepReport step();
@@ -55,12 +59,21 @@ public:
     void restart_solver(SolverMethod method, const SolverOptions& options);
 
     const LoadedScene& loaded() const { return loaded_; }
+    // The patches the solution belongs to: the meshed scene's, or after prepare the adaptive or
+    // hierarchical leaves.
+    const PatchMesh& patches() const { return patches_ ? *patches_ : loaded_.patches; }
+    Subdivision subdivision() const { return subdivision_; }
+    // Hierarchical radiosity's figures (zero otherwise).
+    const HierarchicalReport& hierarchical_report() const { return hierarchical_report_; }
     const DisplayMesh& display() const { return display_; }
     const RadiositySystem& system() const { return *system_; }
     const Solver& solver() const { return *solver_; }
     const FormFactorReport& form_factor_report() const { return form_factor_report_; }
     const SolverOptions& solver_options() const { return solver_options_; }
     SolverMethod method() const { return method_; }
+
+    // Emitted, absorbed and escaped power of the solution as it stands (after prepare).
+    EnergyBalance energy_balance() const;
 
     // Linear radiance L = B / π per display vertex for the solution as it stands (black before prepare).
     std::vector<glm::vec3> vertex_radiance() const;
@@ -69,8 +82,16 @@ public:
     const StageSeconds& seconds() const { return seconds_; }
 
 private:
+    void prepare_uniform(Progress* progress);
+    void prepare_hierarchical(Progress* progress);
+    void use_patches(const PatchMesh& patches);
+
     PipelineOptions options_;
+    Subdivision subdivision_ = Subdivision::uniform;
     LoadedScene loaded_;
+    const PatchMesh* patches_ = nullptr;  // the leaves, when they are not loaded_.patches
+    std::unique_ptr<HierarchicalSystem> hierarchy_;
+    HierarchicalReport hierarchical_report_;
     DisplayMesh display_;
     SolverMethod method_;
     SolverOptions solver_options_;

@@ -25,7 +25,8 @@ struct LoadedScene {
     double patch_size = 0.0;
 };
 
-// Loads and meshes the scene, printing its warnings to stderr. Throws InputError for bad input.
-LoadedScene load_and_mesh(const SceneOptions& options);
+// Loads and meshes the scene, printing its warnings to stderr. Without --patch-size the patch size is
+// default_scale × the scene's default. Throws InputError for bad input.
+LoadedScene load_and_mesh(const SceneOptions& options, double default_scale = 1.0);
 
 }  // namespace rad

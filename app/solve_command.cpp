@@ -37,16 +37,31 @@ void check_output_folder(const std::string& path) {
     }
 }
 
-void print_summary(std::ostream& out, const LoadedScene& loaded, const SolveStatistics& stats,
-                   const FormFactorMatrix& form_factors) {
+void print_transport(std::ostream& out, const RadiosityPipeline& pipeline, const SolveStatistics& stats) {
     char line[512];
-    std::snprintf(line, sizeof line, "scene: %s, %zu patches (patch size %.6g)\n",
-                  loaded.scene.source.c_str(), loaded.patches.size(), loaded.patch_size);
+    if (pipeline.subdivision() == Subdivision::hierarchical) {
+        const HierarchicalReport& h = pipeline.hierarchical_report();
+        std::snprintf(line, sizeof line,
+                      "hierarchy: %zu base patches, %zu elements, %zu leaves, %zu links (%.1f MB), %zu rounds%s\n",
+                      h.base_patches, h.elements, h.leaves, h.links, static_cast<double>(h.memory_bytes) / 1e6,
+                      h.rounds, h.limited ? "; stopped at --max elements or links" : "");
+    } else {
+        const FormFactorMatrix& form_factors = pipeline.system().form_factors;
+        std::snprintf(line, sizeof line, "form factors: %zu nonzeros (%.1f MB), row sums %.4f .. %.4f\n",
+                      form_factors.nonzeros(), static_cast<double>(form_factors.memory_bytes()) / 1e6,
+                      stats.form_factors.min_row_sum, stats.form_factors.max_row_sum);
+    }
     out << line;
-    std::snprintf(line, sizeof line, "form factors: %zu nonzeros (%.1f MB), row sums %.4f .. %.4f\n",
-                  form_factors.nonzeros(), static_cast<double>(form_factors.memory_bytes()) / 1e6,
-                  stats.form_factors.min_row_sum, stats.form_factors.max_row_sum);
+}
+
+void print_summary(std::ostream& out, const RadiosityPipeline& pipeline, const SolveStatistics& stats) {
+    const LoadedScene& loaded = pipeline.loaded();
+    char line[512];
+    std::snprintf(line, sizeof line, "scene: %s, %zu patches (%s, patch size %.6g)\n",
+                  loaded.scene.source.c_str(), pipeline.patches().size(),
+                  std::string(subdivision_name(pipeline.subdivision())).c_str(), loaded.patch_size);
     out << line;
+    print_transport(out, pipeline, stats);
     std::snprintf(line, sizeof line, "solver: %s, %zu steps, relative residual %.3g (tolerance %.3g): %s\n",
                   stats.solver.c_str(), stats.iterations, stats.residual, stats.tolerance,
                   stats.status.c_str());
@@ -76,7 +91,7 @@ SolveStatistics statistics(const RadiosityPipeline& pipeline) {
     stats.mesh_seconds = pipeline.seconds().mesh;
     stats.form_factor_seconds = pipeline.seconds().form_factors;
     stats.solve_seconds = pipeline.seconds().solve;
-    stats.energy = energy_balance(pipeline.system(), solver.solution());
+    stats.energy = pipeline.energy_balance();
     stats.form_factors = pipeline.form_factor_report();
     stats.peak_memory_bytes = peak_memory_bytes();
     return stats;
@@ -92,10 +107,10 @@ int run_solve(const SolveCommandOptions& options) {
     }
     const SolveStatistics stats = statistics(pipeline);
     const LoadedScene& loaded = pipeline.loaded();
-    write_solution_json(options.json_path, loaded.scene, loaded.patches, pipeline.system(),
+    write_solution_json(options.json_path, loaded.scene, pipeline.patches(), pipeline.system(),
                         pipeline.solver().solution(), stats);
 
-    print_summary(std::cout, loaded, stats, pipeline.system().form_factors);
+    print_summary(std::cout, pipeline, stats);
     std::cout << "wrote " << options.json_path << '\n';
     const SolverStatus status = pipeline.solver().report().status;
     if (status == SolverStatus::iteration_limit) {

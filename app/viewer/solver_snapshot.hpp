@@ -47,7 +47,8 @@ struct ViewerRadiance {
 struct ViewerStatistics {
     std::string scene;
     std::size_t patches = 0;
-    std::size_t nonzeros = 0;
+    std::size_t nonzeros = 0;  // form factors, or hierarchical links
+    std::string subdivision;   // uniform, adaptive, hierarchical
     double patch_size = 0.0;
     StageSeconds seconds;
     SolverMethod method = SolverMethod::jacobi;

@@ -195,7 +195,7 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     options_ = options;
     if (had_pipeline) options_.display = display;  // a smooth/flat choice made since the start stays
     pipeline_ = std::move(pipeline);
-    display_ = build_display_mesh(pipeline_->loaded().patches, options_.display);
+    display_ = build_display_mesh(pipeline_->patches(), options_.display);
     start_bounce_history();
     set_can_step(false);
     publish(true, false);
@@ -206,6 +206,11 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     }
     publish_statistics();
     pipeline_->prepare(progress_.get());
+    if (pipeline_->subdivision() != Subdivision::uniform) {
+        // Adaptive and hierarchical subdivision made new patches: new geometry to draw.
+        display_ = build_display_mesh(pipeline_->patches(), options_.display);
+        publish(true, false);
+    }
     reset_solver(Reset{options_.solver.method, options_.solver.tolerance, false});
 }
 
@@ -214,7 +219,7 @@ void SolverWorker::reset_solver(const Reset& reset) {
     pipeline_->prepare(progress_.get());
     options_.solver.method = reset.method;
     options_.solver.tolerance = reset.tolerance;
-    SolverOptions solver_options = rad::solver_options(options_.solver, pipeline_->loaded().patches.size());
+    SolverOptions solver_options = rad::solver_options(options_.solver, pipeline_->patches().size());
     if (reset.from_emission) solver_options.initial = InitialGuess::emission;
     pipeline_->restart_solver(solver_method(options_.solver), solver_options);
     start_bounce_history();
@@ -247,7 +252,7 @@ void SolverWorker::take_step() {
 void SolverWorker::switch_colour_mode(ColourMode mode) {
     if (!pipeline_ || options_.display.mode == mode) return;
     options_.display.mode = mode;
-    display_ = build_display_mesh(pipeline_->loaded().patches, options_.display);
+    display_ = build_display_mesh(pipeline_->patches(), options_.display);
     for (std::size_t i = 0; i < bounce_history_.size(); ++i) {
         vertex_bounces_[i] =
             std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce_history_[i]));
@@ -308,7 +313,8 @@ void SolverWorker::publish_statistics() {
     ViewerStatistics statistics;
     if (pipeline_) {
         statistics.scene = options_.scene.scene;
-        statistics.patches = pipeline_->loaded().patches.size();
+        statistics.patches = pipeline_->patches().size();
+        statistics.subdivision = std::string(subdivision_name(pipeline_->subdivision()));
         statistics.patch_size = pipeline_->loaded().patch_size;
         statistics.seconds = pipeline_->seconds();
         statistics.method = pipeline_->method();

@@ -12,6 +12,7 @@ namespace rad {
 namespace {
 
 constexpr const char* kFormFactorNames[] = {"hemisphere", "analytic"};
+constexpr const char* kSubdivisionNames[] = {"uniform", "adaptive", "hierarchical"};
 
 std::vector<std::string> solver_names() {
     std::vector<std::string> names;
@@ -52,6 +53,7 @@ ViewerPanel::ViewerPanel(const PipelineOptions& options)
     const auto found = std::find(names.begin(), names.end(), options.solver.method);
     method_index_ = found == names.end() ? 0 : static_cast<int>(found - names.begin());
     form_factor_index_ = options.form_factors.method == FormFactorMethod::analytic ? 1 : 0;
+    subdivision_index_ = static_cast<int>(parse_subdivision(options.subdivision.method));
 }
 
 PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const FrameTimer& frames) {
@@ -182,6 +184,10 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
         options_.form_factors.method =
             form_factor_index_ == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
     }
+    if (ImGui::Combo("subdivision", &subdivision_index_, kSubdivisionNames, 3)) {
+        options_.subdivision.method = kSubdivisionNames[subdivision_index_];
+        options_.scene.patch_size = 0.0;  // each method has its own default (hierarchical: base patches)
+    }
     if (ImGui::Button("Re-mesh and recompute")) {
         options_.solver.method = solver_names()[static_cast<std::size_t>(method_index_)];
         options_.scene.scene = statistics.scene.empty() ? scene_path_ : statistics.scene;
@@ -190,8 +196,9 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
 }
 
 void ViewerPanel::draw_statistics(const ViewerStatistics& statistics, const FrameTimer& frames) {
-    ImGui::Text("%zu patches (size %.4g), %zu form factors", statistics.patches, statistics.patch_size,
-                statistics.nonzeros);
+    ImGui::Text("%zu patches (%s, size %.4g), %zu %s", statistics.patches, statistics.subdivision.c_str(),
+                statistics.patch_size, statistics.nonzeros,
+                statistics.subdivision == "hierarchical" ? "links" : "form factors");
     ImGui::Text("seconds: mesh %.3f, form factors %.3f, solve %.3f", statistics.seconds.mesh,
                 statistics.seconds.form_factors, statistics.seconds.solve);
     ImGui::Text("frame %.1f ms (mean %.1f ms), longest while working %.1f ms", frames.latest() * 1e3,

@@ -30,6 +30,20 @@ std::array<glm::dvec3, kDirections> probe_directions() {
     return directions;
 }
 
+// The weighted share of origins whose probes (kDirections per origin, in order) all met back faces.
+double covered_weight(std::span<const RayHit> hits, std::span<const double> weights) {
+    const std::size_t origins = weights.size();
+    double covered = 0.0, total = 0.0;
+    for (std::size_t k = 0; k < origins; ++k) {
+        bool inside = true;
+        for (int d = 0; d < kDirections && inside; ++d)
+            inside = hits[k * kDirections + d].patch == RayHit::kBackFace;
+        total += weights[k];
+        if (inside) covered += weights[k];
+    }
+    return total > 0.0 ? covered / total : 0.0;
+}
+
 }  // namespace
 
 double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint32_t patch, std::uint64_t seed,
@@ -54,16 +68,29 @@ double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint3
         }
     }
     scene.intersect(probes, hits);
+    return covered_weight(hits, weights);
+}
 
-    double covered = 0.0, total = 0.0;
-    for (std::size_t k = 0; k < origins.size(); ++k) {
-        bool inside = true;
-        for (int d = 0; d < kDirections && inside; ++d)
-            inside = hits[k * kDirections + d].patch == RayHit::kBackFace;
-        total += weights[k];
-        if (inside) covered += weights[k];
+double covered_share(std::span<const glm::dvec3> polygon, const glm::dvec3& normal, const RayScene& scene,
+                     std::uint64_t seed, std::uint64_t key, double offset, int count) {
+    thread_local std::vector<glm::dvec2> strata;
+    thread_local std::vector<Ray> probes;
+    thread_local std::vector<double> weights;
+    thread_local std::vector<RayHit> hits;
+    strata.resize(static_cast<std::size_t>(count));
+    RandomStream random(seed ^ kProbeSalt, key);
+    stratified_square(random, strata, false);
+    const Frame frame = frame_around(normal);
+    const std::array<glm::dvec3, kDirections> local = probe_directions();
+    probes.resize(strata.size() * kDirections);
+    hits.resize(probes.size());
+    weights.assign(strata.size(), 1.0);
+    for (std::size_t k = 0; k < strata.size(); ++k) {
+        const glm::dvec3 origin = point_on_convex_polygon(polygon, strata[k]) + offset * normal;
+        for (int d = 0; d < kDirections; ++d) probes[k * kDirections + d] = Ray{origin, 0.0f, frame.to_world(local[d]), 1e30f};
     }
-    return total > 0.0 ? covered / total : 0.0;
+    scene.intersect(probes, hits);
+    return covered_weight(hits, weights);
 }
 
 void measure_coverage(const PatchMesh& patches, const RayScene& scene, std::uint64_t seed,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "rad/embree_scene.hpp"
@@ -17,6 +18,11 @@ double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint3
                      double offset);
 
 inline constexpr int kCoverageProbes = 256;
+
+// The same share for any convex polygon (a hierarchical element), from `probes` stratified points seeded by
+// (seed, key).
+double covered_share(std::span<const glm::dvec3> polygon, const glm::dvec3& normal, const RayScene& scene,
+                     std::uint64_t seed, std::uint64_t key, double offset, int probes);
 
 // covered[i] = covered_share of every patch i, on all cores.
 void measure_coverage(const PatchMesh& patches, const RayScene& scene, std::uint64_t seed,

@@ -1,0 +1,144 @@
+#include "hierarchical_links.hpp"
+
+#include "form_factors_coverage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace rad {
+
+namespace {
+
+ConvexPolygon element_polygon(const ElementTree& tree, const Element& e) {
+    ConvexPolygon polygon;
+    polygon.count = e.is_triangle() ? 3 : 4;
+    for (std::size_t k = 0; k < polygon.count; ++k) polygon.corners[k] = tree.points()[e.corners[k]];
+    return polygon;
+}
+
+double polygon_area(const ConvexPolygon& p) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t k = 1; k + 1 < p.count; ++k)
+        sum += glm::cross(p.corners[k] - p.corners[0], p.corners[k + 1] - p.corners[0]);
+    return 0.5 * glm::length(sum);
+}
+
+glm::dvec3 corner_mean(const ConvexPolygon& p) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t k = 0; k < p.count; ++k) sum += p.corners[k];
+    return sum / static_cast<double>(p.count);
+}
+
+// The point-to-polygon factor over a receiver of n = 3 or 4 corners: at its corners (pulled in a hair, where
+// the kernel is finite even at an edge the source touches) and at the points halfway between its centre and
+// its corners (a rule for the mean that is exact when the kernel varies linearly).
+struct KernelSamples {
+    int n = 4;
+    double corner[4] = {};
+    double inner[4] = {};
+
+    double inner_mean() const { return (inner[0] + inner[1] + inner[2] + (n == 4 ? inner[3] : 0.0)) / n; }
+    // The interpolation between corner values v at inner point k.
+    double interpolated(const double* v, int k) const {
+        if (n == 3) return (4.0 * v[k] + v[(k + 1) % 3] + v[(k + 2) % 3]) / 6.0;
+        return (9.0 * v[k] + 3.0 * v[(k + 1) % 4] + 3.0 * v[(k + 3) % 4] + v[(k + 2) % 4]) / 16.0;
+    }
+};
+
+KernelSamples kernel_samples(const ConvexPolygon& receiver, const glm::dvec3& normal, const ConvexPolygon& source) {
+    constexpr double kCornerInset = 1e-3;
+    KernelSamples samples;
+    samples.n = static_cast<int>(receiver.count);
+    const glm::dvec3 centre = corner_mean(receiver);
+    auto kernel = [&](const glm::dvec3& x) { return std::max(0.0, point_polygon_factor(x, normal, source.span())); };
+    for (int k = 0; k < samples.n; ++k) {
+        samples.inner[k] = kernel(0.5 * (centre + receiver.corners[k]));
+        samples.corner[k] = kernel(receiver.corners[k] + kCornerInset * (centre - receiver.corners[k]));
+    }
+    return samples;
+}
+
+// Corner factors whose mean is the inner rule's mean and whose differences are the corners': the mean from
+// the more accurate rule, the slope from the corners.
+void corner_factors(const KernelSamples& k, double* f) {
+    double corner_mean = 0.0;
+    for (int c = 0; c < k.n; ++c) corner_mean += k.corner[c] / k.n;
+    const double mean = k.inner_mean();
+    double sum = 0.0;
+    for (int c = 0; c < k.n; ++c) sum += f[c] = std::max(0.0, k.corner[c] - corner_mean + mean);
+    const double scale = sum > 0.0 ? mean * k.n / sum : 0.0;
+    for (int c = 0; c < k.n; ++c) f[c] *= scale;
+    if (k.n == 3) f[3] = mean;  // so the four average to the mean, as HierarchicalLink::mean_factor takes it
+}
+
+// The largest gap between the kernel at an inner point and the interpolation of the corner factors there.
+double departure(const KernelSamples& k, const double* f) {
+    double worst = 0.0;
+    for (int c = 0; c < k.n; ++c) worst = std::max(worst, std::abs(k.inner[c] - k.interpolated(f, c)));
+    return worst;
+}
+
+}  // namespace
+
+double LinkEstimator::visibility(const ConvexPolygon& receiver, const glm::dvec3& receiver_normal,
+                                 const ConvexPolygon& source, const glm::dvec3& source_normal,
+                                 RandomStream& random, Scratch& s) const {
+    const auto count = static_cast<std::size_t>(rays_);
+    s.strata.resize(2 * count);
+    stratified_square(random, std::span(s.strata).first(count));
+    stratified_square(random, std::span(s.strata).last(count));
+    s.rays.clear();
+    for (std::size_t k = 0; k < count; ++k) {
+        const glm::dvec3 a = point_on_convex_polygon(receiver.span(), s.strata[k]) + offset_ * receiver_normal;
+        const glm::dvec3 b = point_on_convex_polygon(source.span(), s.strata[count + k]) + offset_ * source_normal;
+        s.rays.push_back(Ray{a, 0.0f, b - a, 1.0f});
+    }
+    s.blocked.resize(count);
+    scene_.occluded(s.rays, s.blocked);
+    const auto open = std::count(s.blocked.begin(), s.blocked.end(), std::uint8_t{0});
+    return static_cast<double>(open) / static_cast<double>(count);
+}
+
+double LinkEstimator::exposed_share(std::uint32_t element) const {
+    constexpr int kProbes = 64;
+    const Element& e = tree_[element];
+    const ConvexPolygon polygon = element_polygon(tree_, e);
+    return 1.0 - covered_share(polygon.span(), e.shape.normal, scene_, seed_, element, offset_, kProbes);
+}
+
+LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch& scratch) const {
+    LinkEstimate estimate;
+    if (r == s) return estimate;
+    const Element& receiver = tree_[r];
+    const Element& source = tree_[s];
+    const ConvexPolygon whole_receiver = element_polygon(tree_, receiver);
+    const ConvexPolygon seen_source =
+        clip_to_front(element_polygon(tree_, source), receiver.shape.centroid, receiver.shape.normal);
+    if (seen_source.empty()) return estimate;
+    const ConvexPolygon facing_receiver =
+        clip_to_front(whole_receiver, source.shape.centroid, source.shape.normal);
+    if (facing_receiver.empty()) return estimate;
+    if (!(polygon_area(facing_receiver) > 0.0) || !(polygon_area(seen_source) > 0.0)) return estimate;
+    const KernelSamples kernel = kernel_samples(whole_receiver, receiver.shape.normal, seen_source);
+    const double unoccluded = kernel.inner_mean();
+    if (!(unoccluded > 0.0)) return estimate;
+    RandomStream random(seed_, std::min(r, s), std::max(r, s));
+    double visible = r < s ? visibility(facing_receiver, receiver.shape.normal, seen_source,
+                                              source.shape.normal, random, scratch)
+                                 : visibility(seen_source, source.shape.normal, facing_receiver,
+                                              receiver.shape.normal, random, scratch);
+    if (!(visible > 0.0)) return estimate;
+    // Rays to the covered part of the source are blocked, but no light leaves from there: what the
+    // receiver sees is the exposed part, whose radiosity is B_source / exposure.
+    visible = std::min(1.0, visible / std::max(static_cast<double>(exposure_[s]), 1e-3));
+    double factor[4] = {0.0, 0.0, 0.0, 0.0};
+    corner_factors(kernel, factor);
+    estimate.transports = true;
+    for (int c = 0; c < 4; ++c) estimate.factor[c] = static_cast<float>(factor[c] * visible);
+    estimate.uncertainty = static_cast<float>(departure(kernel, factor) * visible +
+                                              2.0 * unoccluded * std::min(visible, 1.0 - visible));
+    return estimate;
+}
+
+}  // namespace rad

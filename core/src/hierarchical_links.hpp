@@ -1,0 +1,57 @@
+#pragma once
+
+// What one link between two elements carries: the form factor with visibility, and how uncertain it is.
+// Private to the library.
+
+#include <cstdint>
+#include <vector>
+
+#include "form_factors_sampling.hpp"
+#include "rad/element_tree.hpp"
+#include "rad/embree_scene.hpp"
+
+namespace rad {
+
+struct LinkEstimate {
+    bool transports = false;  // false: the two do not see each other (facing away, or wholly blocked)
+    float factor[4] = {};     // F from receiver to source × visibility, per receiver corner
+    float uncertainty = 0.0f; // see HierarchicalLink::uncertainty
+};
+
+// Estimates links between elements of one tree, from any number of threads at once (each with its own
+// Scratch). The unoccluded factor is the point-to-polygon factor (exact for the whole source): its mean over
+// the receiver by a four-point rule, its variation from its values at the receiver's corners, and its
+// uncertainty from how far the inner points stray from the interpolation between the corners. Visibility is the share of shadow rays between stratified points of the two
+// that arrive; rays are seeded by the pair, so estimates do not depend on threads or order.
+class LinkEstimator {
+  public:
+    struct Scratch {
+        std::vector<Ray> rays;
+        std::vector<std::uint8_t> blocked;
+        std::vector<glm::dvec2> strata;
+    };
+
+    // `exposure`: per element, the share other geometry does not cover (HierarchicalSystem::exposure).
+    LinkEstimator(const ElementTree& tree, const std::vector<float>& exposure, const RayScene& scene,
+                  double ray_offset, int rays, std::uint64_t seed)
+        : tree_(tree), exposure_(exposure), scene_(scene), offset_(ray_offset), rays_(rays), seed_(seed) {}
+
+    LinkEstimate operator()(std::uint32_t receiver, std::uint32_t source, Scratch& scratch) const;
+
+    // The share of an element that other geometry does not cover, by coverage probes.
+    double exposed_share(std::uint32_t element) const;
+
+  private:
+    double visibility(const ConvexPolygon& receiver, const glm::dvec3& receiver_normal,
+                      const ConvexPolygon& source, const glm::dvec3& source_normal, RandomStream& random,
+                      Scratch& scratch) const;
+
+    const ElementTree& tree_;
+    const std::vector<float>& exposure_;
+    const RayScene& scene_;
+    double offset_;
+    int rays_;
+    std::uint64_t seed_;
+};
+
+}  // namespace rad

@@ -1,0 +1,187 @@
+// Building a HierarchicalSystem: the first links between base patches, rounds of refinement and solving,
+// and the leaves as patches.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <string>
+
+#include "form_factors_coverage.hpp"
+#include "form_factors_hemisphere.hpp"
+#include "hierarchical_refine.hpp"
+#include "rad/error.hpp"
+#include "rad/hierarchical_radiosity.hpp"
+
+namespace rad {
+
+namespace {
+
+// Every pair of base patches is a first link: beyond this many the n² pairs alone would not fit.
+constexpr std::size_t kMaxBasePatches = 20'000;
+// Jacobi steps between rounds: the oracle needs the radiosity roughly, not converged.
+constexpr int kRoundSteps = 64;
+constexpr double kRoundTolerance = 1e-3;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double luminance(const glm::dvec3& c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
+
+void check_options(const HierarchicalOptions& o, std::size_t base_patches) {
+    if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance))
+        throw InputError("--refine-tol must be a positive number");
+    if (!(o.min_patch_size >= 0.0) || !std::isfinite(o.min_patch_size))
+        throw InputError("--min-patch-size must be a non-negative number");
+    if (o.visibility_rays < 1 || o.visibility_rays > 4096)
+        throw InputError("--rays for hierarchical links must lie in [1, 4096]");
+    if (base_patches > kMaxBasePatches) {
+        throw InputError("--subdivision hierarchical links every pair of base patches, and " +
+                         std::to_string(base_patches) + " base patches are more than " +
+                         std::to_string(kMaxBasePatches) + ": give a larger --patch-size");
+    }
+}
+
+// Could the two see each other at all: some corner of each strictly in front of the other's plane?
+bool may_face(const PatchMesh& base, std::uint32_t a, std::uint32_t b) {
+    auto in_front = [&](std::uint32_t of, std::uint32_t seen) {
+        const Patch& p = base.patches[of];
+        const double tiny = 1e-9 * std::sqrt(p.area);
+        for (int k = 0; k < base.corner_count(seen); ++k)
+            if (glm::dot(p.normal, base.points[base.corners[seen][k]] - p.centroid) > tiny) return true;
+        return false;
+    };
+    return in_front(a, b) && in_front(b, a);
+}
+
+std::vector<LinkCandidate> first_candidates(const PatchMesh& base) {
+    std::vector<LinkCandidate> candidates;
+    const auto n = static_cast<std::uint32_t>(base.size());
+    for (std::uint32_t r = 0; r < n; ++r)
+        for (std::uint32_t s = 0; s < n; ++s)
+            if (r != s && may_face(base, r, s)) candidates.push_back({r, s});
+    return candidates;
+}
+
+void index_links(HierarchicalSystem& system) {
+    std::sort(system.links.begin(), system.links.end(), [](const HierarchicalLink& a, const HierarchicalLink& b) {
+        return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
+    });
+    system.receiver_runs.clear();
+    for (std::size_t l = 0; l < system.links.size(); ++l) {
+        if (l == 0 || system.links[l].receiver != system.links[l - 1].receiver)
+            system.receiver_runs.push_back(static_cast<std::uint32_t>(l));
+    }
+    system.receiver_runs.push_back(static_cast<std::uint32_t>(system.links.size()));
+}
+
+// Jacobi steps from `radiosity` until the update's power falls below kRoundTolerance of the emitted power.
+void solve_roughly(const HierarchicalSystem& system, std::vector<glm::dvec3>& radiosity) {
+    std::vector<glm::dvec3> next(radiosity.size());
+    double emitted = 0.0;
+    for (std::uint32_t e = 0; e < system.tree.base_size(); ++e)
+        emitted += system.tree[e].shape.area * luminance(system.emission[e]);
+    for (int step = 0; step < kRoundSteps; ++step) {
+        gather_push_pull(system, radiosity, next);
+        double change = 0.0;
+        for (std::uint32_t e = 0; e < system.tree.base_size(); ++e)
+            change += system.tree[e].shape.area * std::abs(luminance(next[e] - radiosity[e]));
+        radiosity.swap(next);
+        if (!(change > kRoundTolerance * emitted)) break;
+    }
+}
+
+// The error a link may leave, as an absolute radiosity: tolerance × the mean radiosity over the base patches,
+// estimated before any solve as the mean emission / (1 − mean reflectance) (exact for a closed furnace).
+double link_epsilon(const HierarchicalSystem& system, std::span<const glm::dvec3> radiosity, double tolerance,
+                    bool solved) {
+    double area = 0.0, b = 0.0, rho = 0.0;
+    for (std::uint32_t e = 0; e < system.tree.base_size(); ++e) {
+        const double a = system.tree[e].shape.area;
+        area += a;
+        b += a * luminance(radiosity[e]);
+        rho += a * luminance(system.reflectance[e]);
+    }
+    if (!(area > 0.0)) return 0.0;
+    const double mean = solved ? b / area : b / area / std::max(1e-3, 1.0 - rho / area);
+    return tolerance * mean;
+}
+
+void finish_leaves(HierarchicalSystem& system) {
+    system.leaves = system.tree.leaves();
+    system.leaf_index.assign(system.tree.size(), Element::kNone);
+    for (std::size_t k = 0; k < system.leaves.size(); ++k) system.leaf_index[system.leaves[k]] = static_cast<std::uint32_t>(k);
+    system.leaf_patches = system.tree.leaf_mesh(system.leaves);
+    RadiositySystem& leaf = system.leaf_system;
+    const std::size_t n = system.leaves.size();
+    leaf.area.resize(n);
+    leaf.reflectance.resize(n);
+    leaf.emission.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t e = system.leaves[k];
+        leaf.area[k] = system.tree[e].shape.area * std::max(1e-6, static_cast<double>(system.exposure[e]));
+        leaf.reflectance[k] = system.reflectance[e];
+        leaf.emission[k] = system.emission[e];
+    }
+    leaf.form_factors.row_begin.assign(n + 1, 0);
+}
+
+}  // namespace
+
+std::size_t HierarchicalSystem::memory_bytes() const {
+    return tree.memory_bytes() + links.capacity() * sizeof(HierarchicalLink) +
+           receiver_runs.capacity() * sizeof(std::uint32_t) +
+           (reflectance.capacity() + emission.capacity()) * sizeof(glm::dvec3) +
+           (leaves.capacity() + leaf_index.capacity()) * sizeof(std::uint32_t);
+}
+
+std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene, const PatchMesh& base,
+                                                              const HierarchicalOptions& options,
+                                                              HierarchicalReport* report_out, Progress* progress) {
+    HierarchicalOptions o = options;
+    if (o.visibility_rays == 0) o.visibility_rays = 16;
+    check_options(o, base.size());
+    auto system = std::make_unique<HierarchicalSystem>(base);
+    for (const Patch& p : base.patches) {
+        const Material& material = scene.surfaces[p.surface].material;
+        system->reflectance.push_back(material.reflectance);
+        system->emission.push_back(material.emitted_radiosity());
+    }
+    HierarchicalReport report;
+    report.base_patches = base.size();
+    double longest = 0.0;
+    for (std::uint32_t e = 0; e < base.size(); ++e) longest = std::max(longest, system->tree.longest_edge(e));
+    report.min_patch_size = o.min_patch_size > 0.0 ? o.min_patch_size : longest / 64.0;
+
+    const RayScene rays(base);
+    std::vector<double> covered(base.size());
+    measure_coverage(base, rays, o.seed, covered);
+    for (double c : covered) system->exposure.push_back(static_cast<float>(1.0 - c));
+    const LinkEstimator estimator(system->tree, system->exposure, rays, ray_offset(base), o.visibility_rays, o.seed);
+    LinkRefiner refiner(*system, estimator, o, report.min_patch_size, report, progress);
+    for (int round = 0; round < std::max(1, o.rounds); ++round) {
+        const auto start = std::chrono::steady_clock::now();
+        refiner.set_epsilon(link_epsilon(*system, refiner.radiosity(), o.tolerance, round > 0));
+        if (progress) progress->begin("linking elements, round " + std::to_string(round + 1), 0);
+        const bool changed = round == 0 ? (refiner.refine(first_candidates(base)), true) : refiner.refine_again();
+        report.refine_seconds += seconds_since(start);
+        if (!changed) break;
+        ++report.rounds;
+        index_links(*system);
+        const auto solve_start = std::chrono::steady_clock::now();
+        if (progress) progress->begin("solving between rounds", 0);
+        solve_roughly(*system, refiner.radiosity());
+        report.solve_seconds += seconds_since(solve_start);
+    }
+    finish_leaves(*system);
+    report.elements = system->tree.size();
+    report.leaves = system->leaves.size();
+    report.links = system->links.size();
+    report.memory_bytes = system->memory_bytes();
+    if (report_out) *report_out = report;
+    return system;
+}
+
+}  // namespace rad
