@@ -4,19 +4,23 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "patch_boundary.hpp"
 #include "rad/patches.hpp"
 
 namespace rad {
 
-// How a patch's radiosity gradient along its plane follows from its neighbours': ∇B_p = Σ_q c_q (B_q − B_p)
-// over the patches q that share a corner with p on the same surface and bend from it by less than the
-// crease angle (the least-squares plane through their centroids). Empty where the neighbours cannot fix a
-// plane (fewer than two, or all in a line).
-struct PatchGradient {
+// How each patch's radiosity gradient along its plane follows from its neighbours':
+// ∇B_p = Σ_q c_q (B_q − B_p) over the patches q that share a boundary point with p (a corner, or a
+// T-vertex on either's edge) on the same surface and bend from it by less than the crease angle (the
+// least-squares plane through their centroids). No terms where the neighbours cannot fix a plane (fewer
+// than two, or all in a line). Compressed rows: patch p's terms are [begin[p], begin[p + 1]).
+struct PatchGradients {
+    std::vector<std::uint32_t> begin;
     std::vector<std::uint32_t> neighbour;
     std::vector<glm::dvec3> coefficient;  // c_q, a vector in the patch's plane
 };
 
-std::vector<PatchGradient> patch_gradients(const PatchMesh& mesh, double cos_crease);
+// `at`: patches_at_points(mesh).
+PatchGradients patch_gradients(const PatchMesh& mesh, const PointPatches& at, double cos_crease);
 
 }  // namespace rad

@@ -13,7 +13,10 @@ namespace rad {
 // smooth: each vertex takes the area-weighted radiosity of the patches around it that lie on the same
 //         surface (hence material) and bend from one another by less than the crease angle, so walls do not
 //         bleed into each other and a box's edges stay sharp while a tessellated curve shades smoothly.
-// flat:   every patch has its own corners and shows its own radiosity.
+//         Where a smaller patch's corner lies inside a larger one's edge (a T-vertex, listed in the mesh's
+//         outlines), the larger patch takes part in that vertex too and is drawn as a fan from its centroid
+//         (which shows its own value) through every point of its outline, so no crack opens there.
+// flat:   every patch has its own corners and shows its own radiosity (outlines are not needed).
 enum class ColourMode { smooth, flat };
 
 // How smooth mode sets a vertex from the patches around it.
