@@ -33,9 +33,10 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
     method_ = solver_method(options.solver);
     if (subdivision_ == Subdivision::hierarchical && !automatic_method(options.solver) &&
         method_ != SolverMethod::jacobi) {
-        throw InputError("--solver " + options.solver.method +
-                         ": hierarchical radiosity gathers along its links by jacobi steps; use --solver jacobi "
-                         "or auto, or --subdivision uniform");
+        throw InputError(
+            "--solver " + options.solver.method +
+            ": hierarchical radiosity gathers along its links by jacobi steps; use --solver jacobi "
+            "or auto, or --subdivision uniform");
     }
     check_solver_options(rad::solver_options(options.solver, 1));  // bad options fail before the long work
     const Stopwatch clock;
@@ -62,7 +63,8 @@ void RadiosityPipeline::prepare_hierarchical(Progress* progress) {
     const Stopwatch clock;
     const HierarchicalOptions options =
         hierarchical_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
-    hierarchy_ = build_hierarchical_system(loaded_.scene, loaded_.patches, options, &hierarchical_report_, progress);
+    hierarchy_ =
+        build_hierarchical_system(loaded_.scene, loaded_.patches, options, &hierarchical_report_, progress);
     ++work_.form_factor_passes;
     seconds_.form_factors = clock.seconds();
     form_factor_report_ = FormFactorReport{};

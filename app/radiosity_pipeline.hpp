@@ -42,7 +42,7 @@ struct StageSeconds {
 // From a meshed scene to radiance per display vertex: form factors once, then the solver stepped by the
 // caller (or to the end), and the display mesh built once. The viewer steps it; the commands run it through.
 class RadiosityPipeline {
-public:
+  public:
     // Loads and meshes the scene (for hierarchical radiosity, into base patches). Throws InputError for bad
     // input or options.
     explicit RadiosityPipeline(const PipelineOptions& options);
@@ -81,7 +81,7 @@ public:
     const WorkCounts& work() const { return work_; }
     const StageSeconds& seconds() const { return seconds_; }
 
-private:
+  private:
     void prepare_uniform(Progress* progress);
     void prepare_hierarchical(Progress* progress);
     void use_patches(const PatchMesh& patches);

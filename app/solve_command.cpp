@@ -41,10 +41,11 @@ void print_transport(std::ostream& out, const RadiosityPipeline& pipeline, const
     char line[512];
     if (pipeline.subdivision() == Subdivision::hierarchical) {
         const HierarchicalReport& h = pipeline.hierarchical_report();
-        std::snprintf(line, sizeof line,
-                      "hierarchy: %zu base patches, %zu elements, %zu leaves, %zu links (%.1f MB), %zu rounds%s\n",
-                      h.base_patches, h.elements, h.leaves, h.links, static_cast<double>(h.memory_bytes) / 1e6,
-                      h.rounds, h.limited ? "; stopped at --max elements or links" : "");
+        std::snprintf(
+            line, sizeof line,
+            "hierarchy: %zu base patches, %zu elements, %zu leaves, %zu links (%.1f MB), %zu rounds%s\n",
+            h.base_patches, h.elements, h.leaves, h.links, static_cast<double>(h.memory_bytes) / 1e6,
+            h.rounds, h.limited ? "; stopped at --max elements or links" : "");
     } else {
         const FormFactorMatrix& form_factors = pipeline.system().form_factors;
         std::snprintf(line, sizeof line, "form factors: %zu nonzeros (%.1f MB), row sums %.4f .. %.4f\n",

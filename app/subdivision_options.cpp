@@ -7,36 +7,37 @@ namespace rad {
 
 std::string_view subdivision_name(Subdivision subdivision) {
     switch (subdivision) {
-    case Subdivision::uniform: return "uniform";
-    case Subdivision::adaptive: return "adaptive";
-    case Subdivision::hierarchical: return "hierarchical";
+        case Subdivision::uniform:
+            return "uniform";
+        case Subdivision::hierarchical:
+            return "hierarchical";
     }
     return "uniform";
 }
 
 Subdivision parse_subdivision(const std::string& name) {
-    for (Subdivision s : {Subdivision::uniform, Subdivision::adaptive, Subdivision::hierarchical})
+    for (Subdivision s : {Subdivision::uniform, Subdivision::hierarchical})
         if (name == subdivision_name(s)) return s;
-    throw InputError("--subdivision: unknown method '" + name + "' (uniform, adaptive, hierarchical)");
+    throw InputError("--subdivision: unknown method '" + name + "' (uniform, hierarchical)");
 }
 
 void add_subdivision_options(CLI::App& command, SubdivisionOptions& options) {
     command
         .add_option("--subdivision", options.method,
-                    "How patches are made: uniform (one size), adaptive (split where light changes, then "
-                    "solved again) or hierarchical (a quadtree of elements linked where needed; --patch-size "
-                    "is then the base patch size, by default 4 times the uniform one)")
-        ->check(CLI::IsMember({"uniform", "adaptive", "hierarchical"}))
+                    "How patches are made: uniform (one size) or hierarchical (a quadtree of elements linked "
+                    "where needed; --patch-size is then the base patch size, by default 4 times the uniform "
+                    "one)")
+        ->check(CLI::IsMember({"uniform", "hierarchical"}))
         ->capture_default_str();
     command
         .add_option("--refine-tol", options.tolerance,
-                    "adaptive and hierarchical: the error a split or link may leave, relative to the scene's "
-                    "mean radiosity (default: hierarchical 0.02)")
+                    "hierarchical: the error a link may leave in its receiver, relative to the scene's mean "
+                    "radiosity (default 0.02)")
         ->check(positive_number());
     command
         .add_option("--min-patch-size", options.min_patch_size,
-                    "adaptive and hierarchical: patches are not split below this edge, in scene units "
-                    "(default: the base size / 64)")
+                    "hierarchical: elements are not split below this edge, in scene units (default: the "
+                    "largest base patch edge / 64)")
         ->check(positive_number());
 }
 

@@ -10,10 +10,9 @@ namespace rad {
 
 // How the scene is cut into patches:
 //   uniform       one patch size everywhere, a form factor for every pair that sees each other;
-//   adaptive      uniform first, then patches split where the radiosity changes steeply or a shadow edge
-//                 crosses, form factors and solve repeated;
 //   hierarchical  coarse base patches split into a quadtree as links between elements need it (HSA).
-enum class Subdivision { uniform, adaptive, hierarchical };
+// (Adaptive subdivision of uniform patches is being built; the command line does not offer it yet.)
+enum class Subdivision { uniform, hierarchical };
 
 std::string_view subdivision_name(Subdivision subdivision);
 

@@ -115,13 +115,47 @@ TEST(SolveCommand, StepLimitIsReportedNotHidden) {
     EXPECT_EQ(stats.at("iterations").get<int>(), 2);
 }
 
+// Hierarchical radiosity through the command line: the leaves are the JSON's patches, their power (area ×
+// exposed share × radiosity) adds up to
+// what the uniform solve of the same box gives (within the 4 % the library's tests allow), and the summary
+// names the hierarchy.
+TEST(SolveCommand, HierarchicalSolvesTheCornellBox) {
+    test::TempDir dir;
+    const std::string uniform_out = (dir.path() / "uniform.json").string();
+    const std::string hierarchical_out = (dir.path() / "hierarchical.json").string();
+    const auto uniform = run_radiosity({"solve", "--json", uniform_out});
+    ASSERT_EQ(uniform.status, 0) << uniform.err;
+    const auto hierarchical =
+        run_radiosity({"solve", "--subdivision", "hierarchical", "--json", hierarchical_out});
+    ASSERT_EQ(hierarchical.status, 0) << hierarchical.err;
+    EXPECT_NE(hierarchical.out.find("hierarchy: 197 base patches"), std::string::npos) << hierarchical.out;
+    auto power = [](const json& doc) {
+        double sum = 0.0;
+        for (const json& p : doc.at("patches")) {
+            const auto b = rgb(p.at("radiosity"));
+            sum += p.at("area").get<double>() * p.at("exposed").get<double>() * (b[0] + b[1] + b[2]);
+        }
+        return sum;
+    };
+    const json u = read_json(uniform_out), h = read_json(hierarchical_out);
+    EXPECT_GT(h.at("patches").size(), 197u);
+    EXPECT_NEAR(power(h) / power(u), 1.0, 0.04);
+    EXPECT_EQ(h.at("stats").at("converged"), true);
+}
+
 TEST(SolveCommand, BadOptionsExitTwoNamingTheOptionAndWriteNothing) {
     test::TempDir dir;
     const std::string out = (dir.path() / "x.json").string();
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-        {{"--solver", "newton"}, "--solver"}, {{"--tol", "-1"}, "--tol"},
-        {{"--sor", "2.5"}, "--sor"},          {{"--bounces", "0"}, "--bounces"},
-        {{"--initial", "zero"}, "--initial"}, {{"--patch-size", "-3"}, "--patch-size"},
+        {{"--solver", "newton"}, "--solver"},
+        {{"--tol", "-1"}, "--tol"},
+        {{"--sor", "2.5"}, "--sor"},
+        {{"--bounces", "0"}, "--bounces"},
+        {{"--initial", "zero"}, "--initial"},
+        {{"--patch-size", "-3"}, "--patch-size"},
+        {{"--subdivision", "fractal"}, "--subdivision"},
+        {{"--refine-tol", "0"}, "--refine-tol"},
+        {{"--subdivision", "hierarchical", "--solver", "cg"}, "--solver"},
     };
     for (const auto& [extra, option] : cases) {
         std::vector<std::string> args = {"solve", "builtin:cube", "--json", out};

@@ -1,5 +1,7 @@
 #include "bench/bench_report.hpp"
 
+#include <cmath>
+
 #include <cstdio>
 
 #include "bench/error_time_plot.hpp"
@@ -15,21 +17,25 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 }
 
 std::string percent(double value) {
+    if (std::isnan(value)) return "n/a";
     return format("%.2f %%", 100.0 * value);
 }
 
 std::string run_table(const BenchResults& results) {
     std::string text =
-        "| scene | patches | form factors | solver | steps | mesh s | form factors s | solve s | "
-        "total s | solver error | total error (reference noise) | image error |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "| scene | subdivision | patches | links | form factors | solver | steps | mesh s | form factors s | "
+        "solve s | total s | solver error | total error (reference noise) | image error |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const BenchRow& r : results.rows) {
-        text += "| " + r.scene + " | " + std::to_string(r.patches) + " | " + r.estimator + " | " + r.solver +
-                " | " + std::to_string(r.steps) + (r.converged ? "" : " (not converged)") + " | " +
+        text += "| " + r.scene + " | " + r.subdivision + " | " + std::to_string(r.patches) + " | " +
+                std::to_string(r.links) + " | " + r.estimator + " | " + r.solver + " | " +
+                std::to_string(r.steps) + (r.converged ? "" : " (not converged)") + " | " +
                 format("%.3f | %.3f | ", r.mesh_seconds, r.form_factor_seconds) +
                 format("%.3f | %.3f | ", r.solve_seconds, r.seconds()) +
-                format("%.2g %% | ", 100.0 * r.solver_error) + percent(r.total_error) + " (" +
-                percent(r.reference_noise) + ") | " + percent(r.image_error) + " |\n";
+                (std::isnan(r.solver_error) ? std::string("n/a | ")
+                                            : format("%.2g %% | ", 100.0 * r.solver_error)) +
+                percent(r.total_error) + " (" + percent(r.reference_noise) + ") | " + percent(r.image_error) +
+                " |\n";
     }
     return text;
 }
@@ -67,15 +73,17 @@ std::string bench_table(const BenchResults& results) {
 
 std::string bench_csv(const BenchResults& results) {
     std::string text =
-        "scene,patches,patch_size,form_factors,solver,steps,converged,mesh_s,form_factors_s,solve_s,"
-        "total_s,render_s,solver_error,total_error,reference_noise,image_error\n";
+        "scene,subdivision,patches,links,patch_size,form_factors,solver,steps,converged,mesh_s,form_factors_"
+        "s,"
+        "solve_s,total_s,render_s,solver_error,total_error,reference_noise,image_error\n";
     for (const BenchRow& r : results.rows) {
         char line[512];
-        std::snprintf(
-            line, sizeof line, "%s,%zu,%.9g,%s,%s,%zu,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%.6g,%.6g,%.6g,%.6g\n",
-            r.scene.c_str(), r.patches, r.patch_size, r.estimator.c_str(), r.solver.c_str(), r.steps,
-            r.converged ? 1 : 0, r.mesh_seconds, r.form_factor_seconds, r.solve_seconds, r.seconds(),
-            r.render_seconds, r.solver_error, r.total_error, r.reference_noise, r.image_error);
+        std::snprintf(line, sizeof line,
+                      "%s,%s,%zu,%zu,%.9g,%s,%s,%zu,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%.6g,%.6g,%.6g,%.6g\n",
+                      r.scene.c_str(), r.subdivision.c_str(), r.patches, r.links, r.patch_size,
+                      r.estimator.c_str(), r.solver.c_str(), r.steps, r.converged ? 1 : 0, r.mesh_seconds,
+                      r.form_factor_seconds, r.solve_seconds, r.seconds(), r.render_seconds, r.solver_error,
+                      r.total_error, r.reference_noise, r.image_error);
         text += line;
     }
     return text;
@@ -84,6 +92,7 @@ std::string bench_csv(const BenchResults& results) {
 std::string bench_plot_svg(const BenchResults& results) {
     std::vector<PlotPoint> points;
     for (const BenchRow& r : results.rows) {
+        if (std::isnan(r.total_error)) continue;
         const std::string scene = r.scene.substr(r.scene.find(':') + 1);
         const std::string series = r.solver == "jacobi" ? r.estimator : r.solver;
         points.push_back({series, scene, r.seconds(), r.total_error});

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 
 #include "rad/camera_view.hpp"
@@ -110,6 +111,7 @@ class SceneSweep {
             [](double a, double b) { return std::abs(std::log(a)) < std::abs(std::log(b)); });
         for (double factor : plan_.size_factors)
             run_level(factor * default_size_, factor == *nearest_default);
+        for (double tolerance : plan_.hierarchical_tolerances) run_hierarchical(tolerance);
     }
 
   private:
@@ -155,6 +157,38 @@ class SceneSweep {
         }
     }
 
+    // Hierarchical radiosity with default base patches: times, links, and the image error (its leaves are
+    // not the patch reference's patches).
+    void run_hierarchical(double tolerance) {
+        PipelineOptions options = pipeline_options(scene_, 0.0, {FormFactorMethod::hemisphere, 0}, plan_);
+        options.subdivision.method = "hierarchical";
+        options.subdivision.tolerance = tolerance;
+        RadiosityPipeline pipeline(options);
+        const auto start = std::chrono::steady_clock::now();
+        const StepReport& report = pipeline.solve();
+        BenchRow row;
+        row.solve_seconds = seconds_since(start) - pipeline.seconds().form_factors;
+        row.scene = scene_;
+        row.subdivision = "hierarchical";
+        row.patches = pipeline.patches().size();
+        row.links = pipeline.hierarchical_report().links;
+        row.patch_size = pipeline.loaded().patch_size;
+        row.estimator = format("links tol %.3g", tolerance);
+        row.solver = "jacobi";
+        row.steps = report.step;
+        row.converged = report.status == SolverStatus::converged;
+        row.mesh_seconds = pipeline.seconds().mesh;
+        row.form_factor_seconds = pipeline.seconds().form_factors;
+        row.solver_error = row.total_error = row.reference_noise = std::numeric_limits<double>::quiet_NaN();
+        const RadianceImage image =
+            SceneImageRenderer(pipeline, false).render(camera_, plan_.image_size, plan_.image_size);
+        row.image_error = block_relative_error(view_of(image), view_of(reference_image_));
+        log_(format("%8.3f s  ", row.seconds()) + row.scene + "  hierarchical  " +
+             std::to_string(row.patches) + " leaves  " + std::to_string(row.links) + " links" +
+             format("  image error %.2f %%", 100 * row.image_error));
+        results_.rows.push_back(row);
+    }
+
     BenchRow run_solver(RadiosityPipeline& pipeline, SolverMethod method, const EstimatorSetting& setting,
                         const PatchReference& reference, const std::vector<glm::dvec3>& converged) {
         SolverCommandOptions command;
@@ -168,6 +202,7 @@ class SceneSweep {
         row.solve_seconds = seconds_since(start);
         row.scene = scene_;
         row.patches = n;
+        row.links = pipeline.system().form_factors.nonzeros();
         row.estimator = estimator_label(setting);
         row.solver = command.method;
         row.steps = report.step;
@@ -195,7 +230,8 @@ class SceneSweep {
         const std::string name = scene_.substr(scene_.find(':') + 1);
         results_.images.push_back({name + "-radiosity.pfm", last_image_});
         results_.images.push_back(
-            {name + "-path-traced.pfm", {reference_image_.width, reference_image_.height, reference_image_.pixels}});
+            {name + "-path-traced.pfm",
+             {reference_image_.width, reference_image_.height, reference_image_.pixels}});
     }
 
     // The path tracer's error at `spp` paths per pixel: against the reference at the reference's size,

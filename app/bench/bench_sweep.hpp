@@ -16,7 +16,9 @@ namespace rad {
 // not measured.
 struct BenchRow {
     std::string scene;
+    std::string subdivision = "uniform";
     std::size_t patches = 0;
+    std::size_t links = 0;  // form-factor nonzeros, or hierarchical links
     double patch_size = 0.0;
     std::string estimator;  // "hemisphere 4096"
     std::string solver;
@@ -27,7 +29,8 @@ struct BenchRow {
     // Area-weighted relative RMS of patch radiosity against the converged solution of the same form factors.
     double solver_error = 0.0;
     // The same against the path-traced patch reference, and that reference's own noise (its standard
-    // errors in the same norm): the error of the reference is at most about this.
+    // errors in the same norm): the error of the reference is at most about this. NaN for hierarchical
+    // runs, whose leaves are not the reference's patches (their image error compares them).
     double total_error = 0.0;
     double reference_noise = 0.0;
     // Mean relative error over 8 × 8-pixel blocks of the rendered image against the path-traced one.

@@ -87,7 +87,8 @@ double covered_share(std::span<const glm::dvec3> polygon, const glm::dvec3& norm
     weights.assign(strata.size(), 1.0);
     for (std::size_t k = 0; k < strata.size(); ++k) {
         const glm::dvec3 origin = point_on_convex_polygon(polygon, strata[k]) + offset * normal;
-        for (int d = 0; d < kDirections; ++d) probes[k * kDirections + d] = Ray{origin, 0.0f, frame.to_world(local[d]), 1e30f};
+        for (int d = 0; d < kDirections; ++d)
+            probes[k * kDirections + d] = Ray{origin, 0.0f, frame.to_world(local[d]), 1e30f};
     }
     scene.intersect(probes, hits);
     return covered_weight(hits, weights);

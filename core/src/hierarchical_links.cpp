@@ -46,12 +46,15 @@ struct KernelSamples {
     }
 };
 
-KernelSamples kernel_samples(const ConvexPolygon& receiver, const glm::dvec3& normal, const ConvexPolygon& source) {
+KernelSamples kernel_samples(const ConvexPolygon& receiver, const glm::dvec3& normal,
+                             const ConvexPolygon& source) {
     constexpr double kCornerInset = 1e-3;
     KernelSamples samples;
     samples.n = static_cast<int>(receiver.count);
     const glm::dvec3 centre = corner_mean(receiver);
-    auto kernel = [&](const glm::dvec3& x) { return std::max(0.0, point_polygon_factor(x, normal, source.span())); };
+    auto kernel = [&](const glm::dvec3& x) {
+        return std::max(0.0, point_polygon_factor(x, normal, source.span()));
+    };
     for (int k = 0; k < samples.n; ++k) {
         samples.inner[k] = kernel(0.5 * (centre + receiver.corners[k]));
         samples.corner[k] = kernel(receiver.corners[k] + kCornerInset * (centre - receiver.corners[k]));
@@ -90,8 +93,10 @@ double LinkEstimator::visibility(const ConvexPolygon& receiver, const glm::dvec3
     stratified_square(random, std::span(s.strata).last(count));
     s.rays.clear();
     for (std::size_t k = 0; k < count; ++k) {
-        const glm::dvec3 a = point_on_convex_polygon(receiver.span(), s.strata[k]) + offset_ * receiver_normal;
-        const glm::dvec3 b = point_on_convex_polygon(source.span(), s.strata[count + k]) + offset_ * source_normal;
+        const glm::dvec3 a =
+            point_on_convex_polygon(receiver.span(), s.strata[k]) + offset_ * receiver_normal;
+        const glm::dvec3 b =
+            point_on_convex_polygon(source.span(), s.strata[count + k]) + offset_ * source_normal;
         s.rays.push_back(Ray{a, 0.0f, b - a, 1.0f});
     }
     s.blocked.resize(count);
@@ -125,9 +130,9 @@ LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch
     if (!(unoccluded > 0.0)) return estimate;
     RandomStream random(seed_, std::min(r, s), std::max(r, s));
     double visible = r < s ? visibility(facing_receiver, receiver.shape.normal, seen_source,
-                                              source.shape.normal, random, scratch)
-                                 : visibility(seen_source, source.shape.normal, facing_receiver,
-                                              receiver.shape.normal, random, scratch);
+                                        source.shape.normal, random, scratch)
+                           : visibility(seen_source, source.shape.normal, facing_receiver,
+                                        receiver.shape.normal, random, scratch);
     if (!(visible > 0.0)) return estimate;
     // Rays to the covered part of the source are blocked, but no light leaves from there: what the
     // receiver sees is the exposed part, whose radiosity is B_source / exposure.

@@ -13,16 +13,17 @@
 namespace rad {
 
 struct LinkEstimate {
-    bool transports = false;  // false: the two do not see each other (facing away, or wholly blocked)
-    float factor[4] = {};     // F from receiver to source × visibility, per receiver corner
-    float uncertainty = 0.0f; // see HierarchicalLink::uncertainty
+    bool transports = false;   // false: the two do not see each other (facing away, or wholly blocked)
+    float factor[4] = {};      // F from receiver to source × visibility, per receiver corner
+    float uncertainty = 0.0f;  // see HierarchicalLink::uncertainty
 };
 
 // Estimates links between elements of one tree, from any number of threads at once (each with its own
 // Scratch). The unoccluded factor is the point-to-polygon factor (exact for the whole source): its mean over
 // the receiver by a four-point rule, its variation from its values at the receiver's corners, and its
-// uncertainty from how far the inner points stray from the interpolation between the corners. Visibility is the share of shadow rays between stratified points of the two
-// that arrive; rays are seeded by the pair, so estimates do not depend on threads or order.
+// uncertainty from how far the inner points stray from the interpolation between the corners. Visibility is
+// the share of shadow rays between stratified points of the two that arrive; rays are seeded by the pair, so
+// estimates do not depend on threads or order.
 class LinkEstimator {
   public:
     struct Scratch {

@@ -19,8 +19,13 @@ double luminance(const glm::dvec3& c) {
 LinkRefiner::LinkRefiner(HierarchicalSystem& system, const LinkEstimator& estimator,
                          const HierarchicalOptions& options, double min_edge, HierarchicalReport& report,
                          Progress* progress)
-    : system_(system), estimator_(estimator), options_(options), min_edge_(min_edge), report_(report),
-      progress_(progress), radiosity_(system.emission) {
+    : system_(system),
+      estimator_(estimator),
+      options_(options),
+      min_edge_(min_edge),
+      report_(report),
+      progress_(progress),
+      radiosity_(system.emission) {
     for (std::size_t e = 0; e < radiosity_.size(); ++e) radiosity_[e] *= std::max(0.0f, system.exposure[e]);
 }
 
@@ -78,24 +83,24 @@ LinkRefiner::Decision LinkRefiner::decide(const HierarchicalLink& link) const {
 
 void LinkRefiner::follow(const HierarchicalLink& link, Decision decision, std::vector<LinkCandidate>& next) {
     switch (decision) {
-    case Decision::accept:
-        system_.links.push_back(link);
-        return;
-    case Decision::split_receiver: {
-        const std::uint32_t first = split(link.receiver);
-        for (std::uint32_t c = first; c < first + 4; ++c) next.push_back({c, link.source});
-        return;
-    }
-    case Decision::split_source: {
-        const std::uint32_t first = split(link.source);
-        for (std::uint32_t c = first; c < first + 4; ++c) next.push_back({link.receiver, c});
-        return;
-    }
-    case Decision::source_children: {
-        const std::uint32_t first = system_.tree[link.source].first_child;
-        for (std::uint32_t c = first; c < first + 4; ++c) next.push_back({link.receiver, c});
-        return;
-    }
+        case Decision::accept:
+            system_.links.push_back(link);
+            return;
+        case Decision::split_receiver: {
+            const std::uint32_t first = split(link.receiver);
+            for (std::uint32_t c = first; c < first + 4; ++c) next.push_back({c, link.source});
+            return;
+        }
+        case Decision::split_source: {
+            const std::uint32_t first = split(link.source);
+            for (std::uint32_t c = first; c < first + 4; ++c) next.push_back({link.receiver, c});
+            return;
+        }
+        case Decision::source_children: {
+            const std::uint32_t first = system_.tree[link.source].first_child;
+            for (std::uint32_t c = first; c < first + 4; ++c) next.push_back({link.receiver, c});
+            return;
+        }
     }
 }
 

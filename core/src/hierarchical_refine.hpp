@@ -19,8 +19,9 @@ struct LinkCandidate {
 class LinkRefiner {
   public:
     // `epsilon`: the error in radiosity (luminance) a link may carry into its receiver.
-    LinkRefiner(HierarchicalSystem& system, const LinkEstimator& estimator, const HierarchicalOptions& options,
-                double min_edge, HierarchicalReport& report, Progress* progress);
+    LinkRefiner(HierarchicalSystem& system, const LinkEstimator& estimator,
+                const HierarchicalOptions& options, double min_edge, HierarchicalReport& report,
+                Progress* progress);
 
     // Estimates the candidates and refines them (and the candidates they spawn) into links.
     void refine(std::vector<LinkCandidate> candidates);

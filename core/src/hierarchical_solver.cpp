@@ -20,7 +20,8 @@ double exposed(const HierarchicalSystem& system, std::uint32_t e) {
 // The mean radiosity over each whole element at B = E: emission from its exposed part.
 std::vector<glm::dvec3> emitted(const HierarchicalSystem& system) {
     std::vector<glm::dvec3> b(system.tree.size());
-    for (std::size_t e = 0; e < b.size(); ++e) b[e] = system.emission[e] * exposed(system, static_cast<std::uint32_t>(e));
+    for (std::size_t e = 0; e < b.size(); ++e)
+        b[e] = system.emission[e] * exposed(system, static_cast<std::uint32_t>(e));
     return b;
 }
 
@@ -28,21 +29,23 @@ std::vector<glm::dvec3> emitted(const HierarchicalSystem& system) {
 using CornerIrradiance = std::array<glm::dvec3, 4>;
 
 // Irradiance gathered by each element along its own links, at its corners.
-std::vector<CornerIrradiance> gather_links(const HierarchicalSystem& system, std::span<const glm::dvec3> radiosity) {
+std::vector<CornerIrradiance> gather_links(const HierarchicalSystem& system,
+                                           std::span<const glm::dvec3> radiosity) {
     std::vector<CornerIrradiance> gathered(system.tree.size(), CornerIrradiance{});
     const std::size_t runs = system.receiver_runs.empty() ? 0 : system.receiver_runs.size() - 1;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs, 256), [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t k = range.begin(); k < range.end(); ++k) {
-            CornerIrradiance sum{};
-            const std::uint32_t first = system.receiver_runs[k], last = system.receiver_runs[k + 1];
-            for (std::uint32_t l = first; l < last; ++l) {
-                const HierarchicalLink& link = system.links[l];
-                const glm::dvec3& b = radiosity[link.source];
-                for (int c = 0; c < 4; ++c) sum[c] += static_cast<double>(link.factor[c]) * b;
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, runs, 256), [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t k = range.begin(); k < range.end(); ++k) {
+                CornerIrradiance sum{};
+                const std::uint32_t first = system.receiver_runs[k], last = system.receiver_runs[k + 1];
+                for (std::uint32_t l = first; l < last; ++l) {
+                    const HierarchicalLink& link = system.links[l];
+                    const glm::dvec3& b = radiosity[link.source];
+                    for (int c = 0; c < 4; ++c) sum[c] += static_cast<double>(link.factor[c]) * b;
+                }
+                gathered[system.links[first].receiver] = sum;
             }
-            gathered[system.links[first].receiver] = sum;
-        }
-    });
+        });
     return gathered;
 }
 
@@ -55,7 +58,10 @@ std::array<CornerIrradiance, 4> child_corners(const CornerIrradiance& h, bool tr
     }
     const glm::dvec3 m23 = 0.5 * (h[2] + h[3]), m30 = 0.5 * (h[3] + h[0]);
     const glm::dvec3 centre = 0.25 * (h[0] + h[1] + h[2] + h[3]);
-    return {{{h[0], m01, centre, m30}, {m01, h[1], m12, centre}, {centre, m12, h[2], m23}, {m30, centre, m23, h[3]}}};
+    return {{{h[0], m01, centre, m30},
+             {m01, h[1], m12, centre},
+             {centre, m12, h[2], m23},
+             {m30, centre, m23, h[3]}}};
 }
 
 // Pushes the irradiance gathered above down to the leaves, where B = E + ρ × the irradiance's mean over the
@@ -67,8 +73,9 @@ void push_pull(const HierarchicalSystem& system, std::uint32_t e, const CornerIr
     CornerIrradiance irradiance;
     for (int c = 0; c < 4; ++c) irradiance[c] = above[c] + gathered[e][c];
     if (element.is_leaf()) {
-        const glm::dvec3 mean = element.is_triangle() ? (irradiance[0] + irradiance[1] + irradiance[2]) / 3.0
-                                                      : 0.25 * (irradiance[0] + irradiance[1] + irradiance[2] + irradiance[3]);
+        const glm::dvec3 mean = element.is_triangle()
+                                    ? (irradiance[0] + irradiance[1] + irradiance[2]) / 3.0
+                                    : 0.25 * (irradiance[0] + irradiance[1] + irradiance[2] + irradiance[3]);
         if (!irradiance_out.empty()) irradiance_out[e] = mean;
         // Only the exposed part emits; B here is the mean over the whole leaf.
         out[e] = system.emission[e] * exposed(system, e) + system.reflectance[e] * mean;
@@ -83,7 +90,9 @@ void push_pull(const HierarchicalSystem& system, std::uint32_t e, const CornerIr
         // The irradiance above is a mean over the whole parent, its covered part's zeros included; a child
         // gets the exposed part's irradiance times its own exposed share.
         CornerIrradiance pushed = below[c];
-        const double share = parent_exposure > 0.0 ? std::min(1.0 / parent_exposure, exposed(system, child) / parent_exposure) : 0.0;
+        const double share = parent_exposure > 0.0
+                                 ? std::min(1.0 / parent_exposure, exposed(system, child) / parent_exposure)
+                                 : 0.0;
         for (glm::dvec3& h : pushed) h *= share;
         push_pull(system, child, pushed, gathered, out, irradiance_out);
         sum += system.tree[child].shape.area * out[child];
@@ -92,7 +101,8 @@ void push_pull(const HierarchicalSystem& system, std::uint32_t e, const CornerIr
     out[e] = area > 0.0 ? sum / area : glm::dvec3(0.0);
 }
 
-void leaf_values(const HierarchicalSystem& system, std::span<const glm::dvec3> element, std::vector<glm::dvec3>& leaf) {
+void leaf_values(const HierarchicalSystem& system, std::span<const glm::dvec3> element,
+                 std::vector<glm::dvec3>& leaf) {
     leaf.resize(system.leaves.size());
     // The radiosity of the exposed part, as uniform patches have it.
     for (std::size_t k = 0; k < system.leaves.size(); ++k) {
@@ -104,8 +114,10 @@ void leaf_values(const HierarchicalSystem& system, std::span<const glm::dvec3> e
 class HierarchicalSolver final : public SolverBase {
   public:
     HierarchicalSolver(const HierarchicalSystem& system, const SolverOptions& options)
-        : SolverBase(SolverMethod::jacobi, system.leaf_system, options), hierarchy_(system),
-          element_(emitted(system)), next_(system.tree.size()) {
+        : SolverBase(SolverMethod::jacobi, system.leaf_system, options),
+          hierarchy_(system),
+          element_(emitted(system)),
+          next_(system.tree.size()) {
         if (options.initial == InitialGuess::direct_illumination) {
             gather_push_pull(hierarchy_, element_, next_);
             element_.swap(next_);
@@ -141,17 +153,21 @@ void gather_push_pull(const HierarchicalSystem& system, std::span<const glm::dve
                       std::span<glm::dvec3> out, std::span<glm::dvec3> leaf_irradiance) {
     const std::vector<CornerIrradiance> gathered = gather_links(system, radiosity);
     const auto bases = static_cast<std::uint32_t>(system.tree.base_size());
-    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, bases, 16), [&](const tbb::blocked_range<std::uint32_t>& range) {
-        for (std::uint32_t b = range.begin(); b < range.end(); ++b) push_pull(system, b, CornerIrradiance{}, gathered, out, leaf_irradiance);
-    });
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, bases, 16),
+                      [&](const tbb::blocked_range<std::uint32_t>& range) {
+                          for (std::uint32_t b = range.begin(); b < range.end(); ++b)
+                              push_pull(system, b, CornerIrradiance{}, gathered, out, leaf_irradiance);
+                      });
 }
 
-EnergyBalance hierarchical_energy_balance(const HierarchicalSystem& system, std::span<const glm::dvec3> solution) {
+EnergyBalance hierarchical_energy_balance(const HierarchicalSystem& system,
+                                          std::span<const glm::dvec3> solution) {
     const std::size_t n = system.tree.size();
     // The mean radiosity of every element: leaves from the solution, inner ones pulled up (children come
     // after their parents in the tree).
     std::vector<glm::dvec3> b(n, glm::dvec3(0.0)), out(n), irradiance(n, glm::dvec3(0.0));
-    for (std::size_t k = 0; k < system.leaves.size(); ++k) b[system.leaves[k]] = solution[k] * exposed(system, system.leaves[k]);
+    for (std::size_t k = 0; k < system.leaves.size(); ++k)
+        b[system.leaves[k]] = solution[k] * exposed(system, system.leaves[k]);
     for (std::size_t e = n; e-- > 0;) {
         const Element& element = system.tree[e];
         if (element.is_leaf()) continue;
@@ -172,12 +188,15 @@ EnergyBalance hierarchical_energy_balance(const HierarchicalSystem& system, std:
         const double area = system.tree[leaf].shape.area;
         balance.emitted += area * exposed(system, leaf) * system.emission[leaf];
         balance.absorbed += area * (glm::dvec3(1.0) - system.reflectance[leaf]) * irradiance[leaf];
-        balance.escaped += area * b[leaf] * glm::max(glm::dvec3(0.0), glm::dvec3(1.0) - reach[leaf] / std::max(1e-6, exposed(system, leaf)));
+        balance.escaped +=
+            area * b[leaf] *
+            glm::max(glm::dvec3(0.0), glm::dvec3(1.0) - reach[leaf] / std::max(1e-6, exposed(system, leaf)));
     }
     return balance;
 }
 
-std::unique_ptr<Solver> make_hierarchical_solver(const HierarchicalSystem& system, const SolverOptions& options) {
+std::unique_ptr<Solver> make_hierarchical_solver(const HierarchicalSystem& system,
+                                                 const SolverOptions& options) {
     check_solver_options(options);
     return std::make_unique<HierarchicalSolver>(system, options);
 }

@@ -66,9 +66,10 @@ std::vector<LinkCandidate> first_candidates(const PatchMesh& base) {
 }
 
 void index_links(HierarchicalSystem& system) {
-    std::sort(system.links.begin(), system.links.end(), [](const HierarchicalLink& a, const HierarchicalLink& b) {
-        return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
-    });
+    std::sort(system.links.begin(), system.links.end(),
+              [](const HierarchicalLink& a, const HierarchicalLink& b) {
+                  return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
+              });
     system.receiver_runs.clear();
     for (std::size_t l = 0; l < system.links.size(); ++l) {
         if (l == 0 || system.links[l].receiver != system.links[l - 1].receiver)
@@ -112,7 +113,8 @@ double link_epsilon(const HierarchicalSystem& system, std::span<const glm::dvec3
 void finish_leaves(HierarchicalSystem& system) {
     system.leaves = system.tree.leaves();
     system.leaf_index.assign(system.tree.size(), Element::kNone);
-    for (std::size_t k = 0; k < system.leaves.size(); ++k) system.leaf_index[system.leaves[k]] = static_cast<std::uint32_t>(k);
+    for (std::size_t k = 0; k < system.leaves.size(); ++k)
+        system.leaf_index[system.leaves[k]] = static_cast<std::uint32_t>(k);
     system.leaf_patches = system.tree.leaf_mesh(system.leaves);
     RadiositySystem& leaf = system.leaf_system;
     const std::size_t n = system.leaves.size();
@@ -139,7 +141,8 @@ std::size_t HierarchicalSystem::memory_bytes() const {
 
 std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene, const PatchMesh& base,
                                                               const HierarchicalOptions& options,
-                                                              HierarchicalReport* report_out, Progress* progress) {
+                                                              HierarchicalReport* report_out,
+                                                              Progress* progress) {
     HierarchicalOptions o = options;
     if (o.visibility_rays == 0) o.visibility_rays = 16;
     check_options(o, base.size());
@@ -159,13 +162,15 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
     std::vector<double> covered(base.size());
     measure_coverage(base, rays, o.seed, covered);
     for (double c : covered) system->exposure.push_back(static_cast<float>(1.0 - c));
-    const LinkEstimator estimator(system->tree, system->exposure, rays, ray_offset(base), o.visibility_rays, o.seed);
+    const LinkEstimator estimator(system->tree, system->exposure, rays, ray_offset(base), o.visibility_rays,
+                                  o.seed);
     LinkRefiner refiner(*system, estimator, o, report.min_patch_size, report, progress);
     for (int round = 0; round < std::max(1, o.rounds); ++round) {
         const auto start = std::chrono::steady_clock::now();
         refiner.set_epsilon(link_epsilon(*system, refiner.radiosity(), o.tolerance, round > 0));
         if (progress) progress->begin("linking elements, round " + std::to_string(round + 1), 0);
-        const bool changed = round == 0 ? (refiner.refine(first_candidates(base)), true) : refiner.refine_again();
+        const bool changed =
+            round == 0 ? (refiner.refine(first_candidates(base)), true) : refiner.refine_again();
         report.refine_seconds += seconds_since(start);
         if (!changed) break;
         ++report.rounds;

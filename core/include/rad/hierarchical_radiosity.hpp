@@ -57,27 +57,27 @@ struct HierarchicalReport {
     std::size_t elements = 0;
     std::size_t leaves = 0;
     std::size_t links = 0;
-    std::size_t rounds = 0;      // rounds that changed the links
-    std::uint64_t rays = 0;      // visibility rays cast
-    double refine_seconds = 0.0;  // estimating and refining links
-    double solve_seconds = 0.0;   // the solves between rounds
-    std::size_t memory_bytes = 0; // elements, points and links
-    bool limited = false;         // max_elements or max_links stopped a split
-    double min_patch_size = 0.0;  // the bound used
+    std::size_t rounds = 0;        // rounds that changed the links
+    std::uint64_t rays = 0;        // visibility rays cast
+    double refine_seconds = 0.0;   // estimating and refining links
+    double solve_seconds = 0.0;    // the solves between rounds
+    std::size_t memory_bytes = 0;  // elements, points and links
+    bool limited = false;          // max_elements or max_links stopped a split
+    double min_patch_size = 0.0;   // the bound used
 };
 
 // The elements, their links, and the leaves as patches: what a solver steps.
 struct HierarchicalSystem {
     ElementTree tree;
-    std::vector<HierarchicalLink> links;        // sorted by receiver
-    std::vector<std::uint32_t> receiver_runs;   // links of one receiver are [runs[k], runs[k + 1])
-    std::vector<glm::dvec3> reflectance;        // per element
-    std::vector<glm::dvec3> emission;           // per element, E = π Le
+    std::vector<HierarchicalLink> links;       // sorted by receiver
+    std::vector<std::uint32_t> receiver_runs;  // links of one receiver are [runs[k], runs[k + 1])
+    std::vector<glm::dvec3> reflectance;       // per element
+    std::vector<glm::dvec3> emission;          // per element, E = π Le
     // Per element, the share of its area that other geometry does not cover (a box on a floor covers part
     // of the floor); negative until measured. Light leaves only from the exposed part.
     std::vector<float> exposure;
-    std::vector<std::uint32_t> leaves;          // leaf elements; patch k of leaf_patches is leaves[k]
-    std::vector<std::uint32_t> leaf_index;      // per element, its place in leaves (kNone for inner ones)
+    std::vector<std::uint32_t> leaves;      // leaf elements; patch k of leaf_patches is leaves[k]
+    std::vector<std::uint32_t> leaf_index;  // per element, its place in leaves (kNone for inner ones)
     PatchMesh leaf_patches;
     // Area, reflectance and emission per leaf, for what reads a RadiositySystem (reports, JSON). As with
     // uniform patches, the area is the exposed area and a solver's solution is the radiosity of the exposed
@@ -106,10 +106,12 @@ void gather_push_pull(const HierarchicalSystem& system, std::span<const glm::dve
 // Emitted, absorbed and escaped power for a solution (one value per leaf, a solver's solution()), as
 // energy_balance gives them for uniform patches: escaped is what leaves each leaf beyond the elements its
 // links reach.
-EnergyBalance hierarchical_energy_balance(const HierarchicalSystem& system, std::span<const glm::dvec3> solution);
+EnergyBalance hierarchical_energy_balance(const HierarchicalSystem& system,
+                                          std::span<const glm::dvec3> solution);
 
 // A steppable Jacobi solver on the hierarchy, from B = E: step k holds the light of paths of up to k
 // bounces. Its solution has one value per leaf.
-std::unique_ptr<Solver> make_hierarchical_solver(const HierarchicalSystem& system, const SolverOptions& options);
+std::unique_ptr<Solver> make_hierarchical_solver(const HierarchicalSystem& system,
+                                                 const SolverOptions& options);
 
 }  // namespace rad
