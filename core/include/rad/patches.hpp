@@ -19,8 +19,9 @@ struct Patch {
 };
 
 // The scene cut into patches (quads where possible, else triangles), each no longer than the patch size on
-// any edge. Within a surface the patches form a conforming mesh: corners are shared and no corner lies inside
-// another patch's edge. Surfaces share no corners, so colours never bleed from one surface to the next.
+// any edge. Within a surface build_patches makes a conforming mesh: corners are shared and no corner lies
+// inside another patch's edge (an ElementTree's leaves may have T-vertices; see `outline`). Surfaces share no
+// corners, so colours never bleed from one surface to the next.
 struct PatchMesh {
     std::vector<glm::dvec3> points;  // corner positions, double precision, for geometry
     // The same corners in float, as OpenGL draws them. (RayScene makes its own normalized float copy.)
