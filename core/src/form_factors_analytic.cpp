@@ -96,10 +96,7 @@ class SourceDistance {
 // `source`.
 double unoccluded_factor(const PatchShape& i, const ConvexPolygon& receiver, const PatchShape& j,
                          const ConvexPolygon& source, const AdaptiveRule& rule) {
-    auto kernel = [&](const glm::dvec3& x) { return point_polygon_factor(x, i.normal, source.span()); };
-    SourceDistance distance(source, j.normal, i.centroid, i.normal);
-    const AdaptiveIntegral integral(rule, kernel, distance);
-    return integral.over(receiver) / i.area;
+    return unoccluded_form_factor(receiver, i.centroid, i.normal, i.area, source, j.normal, rule);
 }
 
 // Appends the pair's shadow rays: from stratified points of `from` (patch lo's part facing hi) to stratified
@@ -130,6 +127,15 @@ struct AnalyticScratch {
 };
 
 }  // namespace
+
+double unoccluded_form_factor(const ConvexPolygon& receiver_part, const glm::dvec3& receiver_centroid,
+                              const glm::dvec3& receiver_normal, double receiver_area, const ConvexPolygon& source,
+                              const glm::dvec3& source_normal, const AdaptiveRule& rule) {
+    auto kernel = [&](const glm::dvec3& x) { return point_polygon_factor(x, receiver_normal, source.span()); };
+    SourceDistance distance(source, source_normal, receiver_centroid, receiver_normal);
+    const AdaptiveIntegral integral(rule, kernel, distance);
+    return integral.over(receiver_part) / receiver_area;
+}
 
 RowFunction analytic_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
                           const AdaptiveRule& rule) {
