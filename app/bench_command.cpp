@@ -52,8 +52,10 @@ int run_bench(const BenchOptions& options) {
     write_file_atomically(out_dir / "bench.csv", bench_csv(results));
     write_file_atomically(out_dir / "bench.svg", bench_plot_svg(results));
     for (const NamedImage& image : results.images) write_image((out_dir / image.name).string(), image.image);
-    std::printf("\nwrote bench.md, bench.csv, bench.svg and %zu images (the first run's and the path tracer's) "
-                "in %s\n", results.images.size(), out_dir.string().c_str());
+    std::printf(
+        "\nwrote bench.md, bench.csv, bench.svg and %zu images (the first run's and the path tracer's) "
+        "in %s\n",
+        results.images.size(), out_dir.string().c_str());
     return 0;
 }
 

@@ -4,13 +4,13 @@
 #include <stb_image_write.h>
 #include <tinyexr.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "rad/error.hpp"
 #include "rad/file_names.hpp"
@@ -24,7 +24,8 @@ void write_png(const std::string& path, const RadianceImage& image, double expos
     std::vector<unsigned char> bytes(image.pixels.size() * 3);
     for (std::size_t i = 0; i < image.pixels.size(); ++i) {
         for (int c = 0; c < 3; ++c) {
-            bytes[3 * i + c] = static_cast<unsigned char>(std::lround(255.0f * srgb_encode(image.pixels[i][c] * scale)));
+            bytes[3 * i + c] =
+                static_cast<unsigned char>(std::lround(255.0f * srgb_encode(image.pixels[i][c] * scale)));
         }
     }
     if (!stbi_write_png(path.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3)) {
@@ -107,9 +108,9 @@ void write_image(const std::string& path, const RadianceImage& image, double exp
     const std::filesystem::path target(path);
     const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
     // The temporary keeps the extension: the writers do not care, but a person looking at the folder does.
-    const std::string temporary = (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) +
-                                             ".tmp" + ext))
-                                      .string();
+    const std::string temporary =
+        (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".tmp" + ext))
+            .string();
     try {
         if (ext == ".png") write_png(temporary, image, exposure);
         if (ext == ".exr") write_exr(temporary, image);

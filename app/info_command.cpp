@@ -9,7 +9,8 @@ namespace rad {
 
 CommandRunner add_info_command(CLI::App& app) {
     auto options = std::make_shared<SceneOptions>();
-    CLI::App* info = app.add_subcommand("info", "Print SCENE's surfaces, materials, patch count, area and bounds");
+    CLI::App* info =
+        app.add_subcommand("info", "Print SCENE's surfaces, materials, patch count, area and bounds");
     add_scene_options(*info, *options);
     return [info, options]() -> int {
         if (!*info) return -1;

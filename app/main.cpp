@@ -13,11 +13,8 @@ int run(int argc, char** argv) {
     app.require_subcommand(0, 1);
     // Commands in the order they are tried; the view command, the default, runs when none other claims.
     const std::vector<rad::CommandRunner> commands = {
-        rad::add_info_command(app),
-        rad::add_solve_command(app),
-        rad::add_render_command(app),
-        rad::add_bench_command(app),
-        rad::add_view_command(app),
+        rad::add_info_command(app),  rad::add_solve_command(app), rad::add_render_command(app),
+        rad::add_bench_command(app), rad::add_view_command(app),
     };
     try {
         app.parse(argc, argv);

@@ -1,5 +1,6 @@
 #include "radiosity_pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "form_factor_options.hpp"
@@ -40,8 +41,10 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
     }
     check_solver_options(rad::solver_options(options.solver, 1));  // bad options fail before the long work
     const Stopwatch clock;
-    loaded_ = load_and_mesh(options.scene,
-                            subdivision_ == Subdivision::hierarchical ? kHierarchicalBaseScale : 1.0);
+    const double base_scale = subdivision_ == Subdivision::hierarchical ? kHierarchicalBaseScale
+                              : subdivision_ == Subdivision::adaptive   ? kAdaptiveBaseScale
+                                                                        : 1.0;
+    loaded_ = load_and_mesh(options.scene, base_scale);
     display_ = build_display_mesh(loaded_.patches, options.display);
     seconds_.mesh = clock.seconds();
     solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
@@ -50,7 +53,38 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
 void RadiosityPipeline::prepare(Progress* progress) {
     if (solver_) return;
     if (subdivision_ == Subdivision::hierarchical) return prepare_hierarchical(progress);
+    if (subdivision_ == Subdivision::adaptive) return prepare_adaptive(progress);
     prepare_uniform(progress);
+}
+
+void RadiosityPipeline::prepare_adaptive(Progress* progress) {
+    const Stopwatch clock;
+    const SolverMethod method =
+        automatic_method(options_.solver) ? SolverMethod::jacobi : solver_method(options_.solver);
+    AdaptiveResult result = subdivide_adaptively(
+        loaded_.scene, loaded_.patches, form_factor_options_for(options_.form_factors, loaded_), method,
+        solver_options_, adaptive_options(options_.subdivision, options_.form_factors.seed), progress);
+    work_.form_factor_passes += result.report.passes.size();
+    seconds_.form_factors = clock.seconds();
+    adaptive_report_ = result.report;
+    adaptive_patches_.emplace(std::move(result.patches));
+    use_patches(*adaptive_patches_);
+    form_factor_report_ = FormFactorReport{};
+    form_factor_report_.seconds = seconds_.form_factors;
+    form_factor_report_.nonzeros = result.system.form_factors.nonzeros();
+    form_factor_report_.memory_bytes = result.system.form_factors.memory_bytes();
+    const FormFactorMatrix& f = result.system.form_factors;
+    form_factor_report_.min_row_sum = f.rows() ? 1e300 : 0.0;
+    for (std::size_t i = 0; i < f.rows(); ++i) {
+        double sum = 0.0;
+        for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k) sum += f.value[k];
+        form_factor_report_.min_row_sum = std::min(form_factor_report_.min_row_sum, sum);
+        form_factor_report_.max_row_sum = std::max(form_factor_report_.max_row_sum, sum);
+    }
+    system_.emplace(std::move(result.system));
+    if (automatic_method(options_.solver)) method_ = recommended_method(*system_, solver_options_);
+    // The last pass's solution is known, but a fresh solver from B = E is what stepping bounces shows.
+    solver_ = make_solver(method_, *system_, solver_options_);
 }
 
 void RadiosityPipeline::use_patches(const PatchMesh& patches) {

@@ -65,6 +65,8 @@ class RadiosityPipeline {
     Subdivision subdivision() const { return subdivision_; }
     // Hierarchical radiosity's figures (zero otherwise).
     const HierarchicalReport& hierarchical_report() const { return hierarchical_report_; }
+    // Adaptive subdivision's passes (empty otherwise).
+    const AdaptiveReport& adaptive_report() const { return adaptive_report_; }
     const DisplayMesh& display() const { return display_; }
     const RadiositySystem& system() const { return *system_; }
     const Solver& solver() const { return *solver_; }
@@ -84,6 +86,7 @@ class RadiosityPipeline {
   private:
     void prepare_uniform(Progress* progress);
     void prepare_hierarchical(Progress* progress);
+    void prepare_adaptive(Progress* progress);
     void use_patches(const PatchMesh& patches);
 
     PipelineOptions options_;
@@ -91,7 +94,9 @@ class RadiosityPipeline {
     LoadedScene loaded_;
     const PatchMesh* patches_ = nullptr;  // the leaves, when they are not loaded_.patches
     std::unique_ptr<HierarchicalSystem> hierarchy_;
+    std::optional<PatchMesh> adaptive_patches_;
     HierarchicalReport hierarchical_report_;
+    AdaptiveReport adaptive_report_;
     DisplayMesh display_;
     SolverMethod method_;
     SolverOptions solver_options_;

@@ -100,9 +100,8 @@ int run_render(RenderOptions options) {
     std::printf(
         "%zu patches, %s: %zu steps, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f, "
         "render %.3f (%s)\n",
-        pipeline.patches().size(), std::string(solver_method_name(pipeline.method())).c_str(),
-        report.step, report.residual, s.mesh, s.form_factors, s.solve, render_seconds,
-        context.description().c_str());
+        pipeline.patches().size(), std::string(solver_method_name(pipeline.method())).c_str(), report.step,
+        report.residual, s.mesh, s.form_factors, s.solve, render_seconds, context.description().c_str());
     std::printf("wrote %s (%dx%d)\n", options.out.c_str(), options.width, options.height);
     return 0;
 }

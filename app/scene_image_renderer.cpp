@@ -11,14 +11,16 @@ SceneImageRenderer::SceneImageRenderer(const RadiosityPipeline& pipeline, bool o
     const DisplayMesh& display = pipeline.display();
     // glm::uvec3 is three packed uint32 indices, which is how OpenGL reads a triangle list.
     static_assert(sizeof(glm::uvec3) == 3 * sizeof(std::uint32_t));
-    const std::span<const std::uint32_t> triangles(reinterpret_cast<const std::uint32_t*>(display.triangles.data()),
-                                                   display.triangles.size() * 3);
+    const std::span<const std::uint32_t> triangles(
+        reinterpret_cast<const std::uint32_t*>(display.triangles.data()), display.triangles.size() * 3);
     renderer_.upload_geometry(display.positions, triangles,
                               outline ? patch_outline(display) : std::vector<std::uint32_t>{});
     refresh_colours();
 }
 
-void SceneImageRenderer::refresh_colours() { renderer_.update_colours(pipeline_.vertex_radiance()); }
+void SceneImageRenderer::refresh_colours() {
+    renderer_.update_colours(pipeline_.vertex_radiance());
+}
 
 RadianceImage SceneImageRenderer::render(const Camera& camera, int width, int height) const {
     OffscreenTarget target(width, height);

@@ -10,7 +10,7 @@ namespace rad {
 // refresh_colours() is called (after solver steps); a new viewpoint costs one frame, no solver work.
 // Needs a current OpenGL context for its whole life.
 class SceneImageRenderer {
-public:
+  public:
     SceneImageRenderer(const RadiosityPipeline& pipeline, bool outline);
 
     void refresh_colours();
@@ -18,7 +18,7 @@ public:
 
     const Renderer& renderer() const { return renderer_; }
 
-private:
+  private:
     const RadiosityPipeline& pipeline_;
     Renderer renderer_;
     bool outline_;

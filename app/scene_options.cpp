@@ -20,12 +20,14 @@ CLI::Validator positive_number() {
 }
 
 void add_scene_options(CLI::App& command, SceneOptions& options) {
-    command.add_option("scene", options.scene,
-                       "Scene: a .obj (with its .mtl) or .ply file, or builtin:NAME (cornell, cube, parallel, "
-                       "perpendicular)")
+    command
+        .add_option("scene", options.scene,
+                    "Scene: a .obj (with its .mtl) or .ply file, or builtin:NAME (cornell, cube, parallel, "
+                    "perpendicular)")
         ->capture_default_str();
-    command.add_option("--patch-size", options.patch_size,
-                       "Largest patch edge, in scene units (default: a sixteenth of the scene's largest extent)")
+    command
+        .add_option("--patch-size", options.patch_size,
+                    "Largest patch edge, in scene units (default: a sixteenth of the scene's largest extent)")
         ->check(positive_number());
 }
 
@@ -33,7 +35,8 @@ LoadedScene load_and_mesh(const SceneOptions& options, double default_scale) {
     LoadedScene loaded;
     loaded.scene = load_scene(options.scene);
     for (const std::string& w : loaded.scene.warnings) std::cerr << "radiosity: warning: " << w << '\n';
-    loaded.patch_size = options.patch_size > 0.0 ? options.patch_size : default_scale * default_patch_size(loaded.scene);
+    loaded.patch_size =
+        options.patch_size > 0.0 ? options.patch_size : default_scale * default_patch_size(loaded.scene);
     MeshingOptions meshing;
     meshing.patch_size = loaded.patch_size;
     loaded.patches = build_patches(loaded.scene, meshing);

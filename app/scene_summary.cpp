@@ -27,15 +27,16 @@ void print_scene_summary(std::ostream& out, const LoadedScene& loaded) {
     char line[256];
     out << "scene: " << scene.source << '\n';
     out << "surfaces: " << scene.surfaces.size() << '\n';
-    std::snprintf(line, sizeof line, "  %-20s %-12s %6s %14s %8s  %-20s %s\n", "name", "material", "faces", "area",
-                  "patches", "reflectance", "emission (Le)");
+    std::snprintf(line, sizeof line, "  %-20s %-12s %6s %14s %8s  %-20s %s\n", "name", "material", "faces",
+                  "area", "patches", "reflectance", "emission (Le)");
     out << line;
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const Surface& surface = scene.surfaces[s];
         const auto count = patches.surface_begin[s + 1] - patches.surface_begin[s];
         std::snprintf(line, sizeof line, "  %-20s %-12s %6zu %14.6g %8u  %-20s %s\n", surface.name.c_str(),
-                      surface.material.name.c_str(), surface.mesh.n_faces(), surface_area(surface.mesh), count,
-                      rgb(surface.material.reflectance).c_str(), rgb(surface.material.emission).c_str());
+                      surface.material.name.c_str(), surface.mesh.n_faces(), surface_area(surface.mesh),
+                      count, rgb(surface.material.reflectance).c_str(),
+                      rgb(surface.material.emission).c_str());
         out << line;
     }
     std::snprintf(line, sizeof line, "patches: %zu (patch size %.6g)\n", patches.size(), loaded.patch_size);

@@ -47,6 +47,15 @@ void print_transport(std::ostream& out, const RadiosityPipeline& pipeline, const
             h.base_patches, h.elements, h.leaves, h.links, static_cast<double>(h.memory_bytes) / 1e6,
             h.rounds, h.limited ? "; stopped at --max elements or links" : "");
     } else {
+        if (pipeline.subdivision() == Subdivision::adaptive) {
+            const AdaptiveReport& a = pipeline.adaptive_report();
+            std::string passes;
+            for (const AdaptivePass& p : a.passes)
+                passes += (passes.empty() ? "" : " -> ") + std::to_string(p.patches);
+            std::snprintf(line, sizeof line, "adaptive: %zu passes (%s patches), stopped: %s\n",
+                          a.passes.size(), passes.c_str(), std::string(adaptive_stop_name(a.stop)).c_str());
+            out << line;
+        }
         const FormFactorMatrix& form_factors = pipeline.system().form_factors;
         std::snprintf(line, sizeof line, "form factors: %zu nonzeros (%.1f MB), row sums %.4f .. %.4f\n",
                       form_factors.nonzeros(), static_cast<double>(form_factors.memory_bytes()) / 1e6,

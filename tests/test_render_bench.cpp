@@ -79,6 +79,7 @@ void check_coverage(const QuickBenchOutput& out) {
     EXPECT_GT(estimators["hemisphere"], 0);
     EXPECT_GT(estimators["analytic"], 0);
     EXPECT_EQ(meshes.size(), 2u);
+    EXPECT_GT(subdivisions["adaptive"], 0);
     EXPECT_GT(subdivisions["hierarchical"], 0);
 }
 

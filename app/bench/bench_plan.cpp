@@ -17,6 +17,7 @@ BenchPlan default_bench_plan(bool quick) {
         plan.reference_spp = 16;
         plan.comparison_sizes = {64};
         plan.comparison_max_spp = 16;
+        plan.adaptive_tolerances = {0.5};
         plan.hierarchical_tolerances = {0.05};
         return plan;
     }
@@ -33,6 +34,7 @@ BenchPlan default_bench_plan(bool quick) {
     plan.reference_spp = 128;
     plan.comparison_sizes = {256, 1024};
     plan.comparison_max_spp = 1024;
+    plan.adaptive_tolerances = {0.25, 0.15};
     plan.hierarchical_tolerances = {0.1, 0.03, 0.01, 0.003};
     return plan;
 }

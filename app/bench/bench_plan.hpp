@@ -36,7 +36,9 @@ struct BenchPlan {
     // (or the one nearest it) with the default estimator and solver.
     std::vector<int> comparison_sizes;
     int comparison_max_spp = 0;  // the path tracer's search for radiosity's image error stops here
-    // Hierarchical radiosity at these --refine-tol values (default base patches and solver), per scene.
+    // Adaptive subdivision and hierarchical radiosity at these --refine-tol values (default first or base
+    // patches and solver), per scene.
+    std::vector<double> adaptive_tolerances;
     std::vector<double> hierarchical_tolerances;
 };
 

@@ -111,7 +111,8 @@ class SceneSweep {
             [](double a, double b) { return std::abs(std::log(a)) < std::abs(std::log(b)); });
         for (double factor : plan_.size_factors)
             run_level(factor * default_size_, factor == *nearest_default);
-        for (double tolerance : plan_.hierarchical_tolerances) run_hierarchical(tolerance);
+        for (double tolerance : plan_.adaptive_tolerances) run_subdivided("adaptive", tolerance);
+        for (double tolerance : plan_.hierarchical_tolerances) run_subdivided("hierarchical", tolerance);
     }
 
   private:
@@ -157,11 +158,11 @@ class SceneSweep {
         }
     }
 
-    // Hierarchical radiosity with default base patches: times, links, and the image error (its leaves are
-    // not the patch reference's patches).
-    void run_hierarchical(double tolerance) {
+    // Adaptive or hierarchical subdivision with default first or base patches: times, form factors or links,
+    // and the image error (the leaves are not the patch reference's patches).
+    void run_subdivided(const std::string& method, double tolerance) {
         PipelineOptions options = pipeline_options(scene_, 0.0, {FormFactorMethod::hemisphere, 0}, plan_);
-        options.subdivision.method = "hierarchical";
+        options.subdivision.method = method;
         options.subdivision.tolerance = tolerance;
         RadiosityPipeline pipeline(options);
         const auto start = std::chrono::steady_clock::now();
@@ -169,12 +170,13 @@ class SceneSweep {
         BenchRow row;
         row.solve_seconds = seconds_since(start) - pipeline.seconds().form_factors;
         row.scene = scene_;
-        row.subdivision = "hierarchical";
+        row.subdivision = method;
         row.patches = pipeline.patches().size();
-        row.links = pipeline.hierarchical_report().links;
+        row.links = pipeline.form_factor_report().nonzeros;
         row.patch_size = pipeline.loaded().patch_size;
-        row.estimator = format("links tol %.3g", tolerance);
-        row.solver = "jacobi";
+        row.estimator =
+            (method == "hierarchical" ? "links" : "hemisphere 4096") + format(" tol %.3g", tolerance);
+        row.solver = std::string(solver_method_name(pipeline.method()));
         row.steps = report.step;
         row.converged = report.status == SolverStatus::converged;
         row.mesh_seconds = pipeline.seconds().mesh;
@@ -183,7 +185,7 @@ class SceneSweep {
         const RadianceImage image =
             SceneImageRenderer(pipeline, false).render(camera_, plan_.image_size, plan_.image_size);
         row.image_error = block_relative_error(view_of(image), view_of(reference_image_));
-        log_(format("%8.3f s  ", row.seconds()) + row.scene + "  hierarchical  " +
+        log_(format("%8.3f s  ", row.seconds()) + row.scene + "  " + method + "  " +
              std::to_string(row.patches) + " leaves  " + std::to_string(row.links) + " links" +
              format("  image error %.2f %%", 100 * row.image_error));
         results_.rows.push_back(row);

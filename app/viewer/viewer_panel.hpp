@@ -40,7 +40,7 @@ class ViewerPanel {
     PipelineOptions options_;  // the values the panel's controls edit
     int method_index_ = 0;
     int form_factor_index_ = 0;
-    int subdivision_index_ = 0;  // into uniform, hierarchical
+    int subdivision_index_ = 0;  // into uniform, adaptive, hierarchical
     std::string scene_path_;
     std::string message_;
 };

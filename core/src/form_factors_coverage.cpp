@@ -94,6 +94,27 @@ double covered_share(std::span<const glm::dvec3> polygon, const glm::dvec3& norm
     return covered_weight(hits, weights);
 }
 
+void covered_points(std::span<const glm::dvec3> points, const glm::dvec3& normal, const RayScene& scene,
+                    std::vector<std::uint8_t>& covered) {
+    thread_local std::vector<Ray> probes;
+    thread_local std::vector<RayHit> hits;
+    const Frame frame = frame_around(normal);
+    const std::array<glm::dvec3, kDirections> local = probe_directions();
+    probes.resize(points.size() * kDirections);
+    hits.resize(probes.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        for (int d = 0; d < kDirections; ++d)
+            probes[k * kDirections + d] = Ray{points[k], 0.0f, frame.to_world(local[d]), 1e30f};
+    }
+    scene.intersect(probes, hits);
+    covered.resize(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        bool inside = true;
+        for (int d = 0; d < kDirections && inside; ++d) inside = hits[k * kDirections + d].patch == RayHit::kBackFace;
+        covered[k] = inside ? 1 : 0;
+    }
+}
+
 void measure_coverage(const PatchMesh& patches, const RayScene& scene, std::uint64_t seed,
                       std::vector<double>& covered) {
     const double offset = ray_offset(patches);

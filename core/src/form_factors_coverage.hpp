@@ -19,6 +19,11 @@ double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint3
 
 inline constexpr int kCoverageProbes = 256;
 
+// covered[k] = 1 when the point points[k] (already lifted off its surface along `normal`) is covered: its
+// probes all meet back faces. The same test as covered_share, point by point.
+void covered_points(std::span<const glm::dvec3> points, const glm::dvec3& normal, const RayScene& scene,
+                    std::vector<std::uint8_t>& covered);
+
 // The same share for any convex polygon (a hierarchical element), from `probes` stratified points seeded by
 // (seed, key).
 double covered_share(std::span<const glm::dvec3> polygon, const glm::dvec3& normal, const RayScene& scene,

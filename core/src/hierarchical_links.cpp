@@ -88,25 +88,32 @@ constexpr AdaptiveRule kLinkRule{0.1, 0.5, 1.0, 3};
 
 }  // namespace
 
-double LinkEstimator::visibility(const ConvexPolygon& receiver, const glm::dvec3& receiver_normal,
-                                 const ConvexPolygon& source, const glm::dvec3& source_normal,
+double LinkEstimator::visibility(const ConvexPolygon& from, const glm::dvec3& from_normal, bool from_partly_covered,
+                                 const ConvexPolygon& to, const glm::dvec3& to_normal, bool to_partly_covered,
                                  RandomStream& random, Scratch& s) const {
     const auto count = static_cast<std::size_t>(rays_);
     s.strata.resize(2 * count);
     stratified_square(random, std::span(s.strata).first(count));
     stratified_square(random, std::span(s.strata).last(count));
+    s.from.resize(count);
+    s.to.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        s.from[k] = point_on_convex_polygon(from.span(), s.strata[k]) + offset_ * from_normal;
+        s.to[k] = point_on_convex_polygon(to.span(), s.strata[count + k]) + offset_ * to_normal;
+    }
+    s.from_covered.assign(count, 0);
+    s.to_covered.assign(count, 0);
+    if (from_partly_covered) covered_points(s.from, from_normal, scene_, s.from_covered);
+    if (to_partly_covered) covered_points(s.to, to_normal, scene_, s.to_covered);
     s.rays.clear();
     for (std::size_t k = 0; k < count; ++k) {
-        const glm::dvec3 a =
-            point_on_convex_polygon(receiver.span(), s.strata[k]) + offset_ * receiver_normal;
-        const glm::dvec3 b =
-            point_on_convex_polygon(source.span(), s.strata[count + k]) + offset_ * source_normal;
-        s.rays.push_back(Ray{a, 0.0f, b - a, 1.0f});
+        if (!s.from_covered[k] && !s.to_covered[k]) s.rays.push_back(Ray{s.from[k], 0.0f, s.to[k] - s.from[k], 1.0f});
     }
-    s.blocked.resize(count);
+    if (s.rays.empty()) return -1.0;
+    s.blocked.resize(s.rays.size());
     scene_.occluded(s.rays, s.blocked);
     const auto open = std::count(s.blocked.begin(), s.blocked.end(), std::uint8_t{0});
-    return static_cast<double>(open) / static_cast<double>(count);
+    return static_cast<double>(open) / static_cast<double>(s.rays.size());
 }
 
 double LinkEstimator::exposed_share(std::uint32_t element) const {
@@ -116,7 +123,7 @@ double LinkEstimator::exposed_share(std::uint32_t element) const {
     return 1.0 - covered_share(polygon.span(), e.shape.normal, scene_, seed_, element, offset_, kProbes);
 }
 
-LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch& scratch) const {
+LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch& scratch, int draw) const {
     LinkEstimate estimate;
     if (r == s) return estimate;
     const Element& receiver = tree_[r];
@@ -136,21 +143,29 @@ LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch
         unoccluded_form_factor(facing_receiver, receiver.shape.centroid, receiver.shape.normal,
                                receiver.shape.area, seen_source, source.shape.normal, kLinkRule);
     if (!(unoccluded > 0.0)) return estimate;
-    RandomStream random(seed_, std::min(r, s), std::max(r, s));
-    double visible = r < s ? visibility(facing_receiver, receiver.shape.normal, seen_source,
-                                        source.shape.normal, random, scratch)
-                           : visibility(seen_source, source.shape.normal, facing_receiver,
-                                        receiver.shape.normal, random, scratch);
+    const double receiver_exposure = exposure_[r], source_exposure = exposure_[s];
+    if (!(receiver_exposure > 0.0) || !(source_exposure > 0.0)) return estimate;  // wholly covered
+    const bool receiver_partly = receiver_exposure < 1.0, source_partly = source_exposure < 1.0;
+    estimate.facing = true;
+    RandomStream random(seed_ + static_cast<std::uint64_t>(draw) * 0x9e3779b97f4a7c15ull, std::min(r, s),
+                        std::max(r, s));
+    // The visibility between the exposed parts, with rays that always run from the lower index to the
+    // higher, so both directions of a pair see the same.
+    const double visible =
+        r < s ? visibility(facing_receiver, receiver.shape.normal, receiver_partly, seen_source, source.shape.normal,
+                           source_partly, random, scratch)
+              : visibility(seen_source, source.shape.normal, source_partly, facing_receiver, receiver.shape.normal,
+                           receiver_partly, random, scratch);
     if (!(visible > 0.0)) return estimate;
-    // Rays to the covered part of the source are blocked, but no light leaves from there: what the
-    // receiver sees is the exposed part, whose radiosity is B_source / exposure.
-    visible = std::min(1.0, visible / std::max(static_cast<double>(exposure_[s]), 1e-3));
+    // The irradiance is a mean over the whole receiver, its covered part dark (× its exposure), and comes
+    // from the exposed part of the source, whose radiosity is B_source / its exposure.
+    const double exposed_scale = std::min(1.0, receiver_exposure) / source_exposure;
     double factor[4] = {0.0, 0.0, 0.0, 0.0};
     corner_factors(kernel, unoccluded, factor);
     estimate.transports = true;
-    for (int c = 0; c < 4; ++c) estimate.factor[c] = static_cast<float>(factor[c] * visible);
-    estimate.uncertainty = static_cast<float>(departure(kernel, factor) * visible +
-                                              2.0 * unoccluded * std::min(visible, 1.0 - visible));
+    for (int c = 0; c < 4; ++c) estimate.factor[c] = static_cast<float>(factor[c] * visible * exposed_scale);
+    estimate.uncertainty = static_cast<float>(
+        (departure(kernel, factor) * visible + 2.0 * unoccluded * std::min(visible, 1.0 - visible)) * exposed_scale);
     return estimate;
 }
 

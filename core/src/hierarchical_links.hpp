@@ -13,7 +13,8 @@
 namespace rad {
 
 struct LinkEstimate {
-    bool transports = false;   // false: the two do not see each other (facing away, or wholly blocked)
+    bool facing = false;      // false: the two cannot see each other (facing away, or one wholly covered)
+    bool transports = false;  // false: they cannot, or none of the shadow rays arrived
     float factor[4] = {};      // F from receiver to source × visibility, per receiver corner
     float uncertainty = 0.0f;  // see HierarchicalLink::uncertainty
 };
@@ -30,6 +31,8 @@ class LinkEstimator {
         std::vector<Ray> rays;
         std::vector<std::uint8_t> blocked;
         std::vector<glm::dvec2> strata;
+        std::vector<glm::dvec3> from, to;
+        std::vector<std::uint8_t> from_covered, to_covered;
     };
 
     // `exposure`: per element, the share other geometry does not cover (HierarchicalSystem::exposure).
@@ -37,15 +40,21 @@ class LinkEstimator {
                   double ray_offset, int rays, std::uint64_t seed)
         : tree_(tree), exposure_(exposure), scene_(scene), offset_(ray_offset), rays_(rays), seed_(seed) {}
 
-    LinkEstimate operator()(std::uint32_t receiver, std::uint32_t source, Scratch& scratch) const;
+    // `draw` picks an independent set of shadow rays: refinement decides on draw 0 and keeps the factor of
+    // draw 1, because keeping the estimate it decided on would favour links whose rays happened to agree
+    // (all blocked, or all open: no uncertainty), which biases the light they carry.
+    LinkEstimate operator()(std::uint32_t receiver, std::uint32_t source, Scratch& scratch, int draw = 0) const;
 
     // The share of an element that other geometry does not cover, by coverage probes.
     double exposed_share(std::uint32_t element) const;
 
   private:
-    double visibility(const ConvexPolygon& receiver, const glm::dvec3& receiver_normal,
-                      const ConvexPolygon& source, const glm::dvec3& source_normal, RandomStream& random,
-                      Scratch& scratch) const;
+    // The share of shadow rays between exposed points of the two polygons that arrive; ends on a side
+    // marked partly covered are tested and dropped when covered. Negative when no pair of exposed points
+    // was drawn.
+    double visibility(const ConvexPolygon& from, const glm::dvec3& from_normal, bool from_partly_covered,
+                      const ConvexPolygon& to, const glm::dvec3& to_normal, bool to_partly_covered,
+                      RandomStream& random, Scratch& scratch) const;
 
     const ElementTree& tree_;
     const std::vector<float>& exposure_;

@@ -104,7 +104,8 @@ void LinkRefiner::follow(const HierarchicalLink& link, Decision decision, std::v
     }
 }
 
-std::vector<LinkEstimate> LinkRefiner::estimate(const std::vector<LinkCandidate>& candidates) {
+std::vector<LinkEstimate> LinkRefiner::estimate(const std::vector<LinkCandidate>& candidates, int draw) {
+    report_.rays += candidates.size() * static_cast<std::uint64_t>(options_.visibility_rays);
     std::vector<LinkEstimate> estimates(candidates.size());
     tbb::enumerable_thread_specific<LinkEstimator::Scratch> scratch;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
@@ -112,7 +113,7 @@ std::vector<LinkEstimate> LinkRefiner::estimate(const std::vector<LinkCandidate>
                           if (progress_ && progress_->cancelled()) return;
                           LinkEstimator::Scratch& s = scratch.local();
                           for (std::size_t k = range.begin(); k < range.end(); ++k)
-                              estimates[k] = estimator_(candidates[k].receiver, candidates[k].source, s);
+                              estimates[k] = estimator_(candidates[k].receiver, candidates[k].source, s, draw);
                           if (progress_) progress_->advance(range.size());
                       });
     if (progress_ && progress_->cancelled()) throw Cancelled{};
@@ -130,22 +131,42 @@ void LinkRefiner::measure_exposure() {
 void LinkRefiner::refine(std::vector<LinkCandidate> candidates) {
     while (!candidates.empty()) {
         measure_exposure();
-        const std::vector<LinkEstimate> estimates = estimate(candidates);
-        report_.rays += candidates.size() * static_cast<std::uint64_t>(options_.visibility_rays);
-        std::vector<LinkCandidate> next;
+        const std::vector<LinkEstimate> estimates = estimate(candidates, 0);
+        std::vector<LinkCandidate> next, finished;
         for (std::size_t k = 0; k < candidates.size(); ++k) {
-            if (!estimates[k].transports) continue;
+            if (!estimates[k].facing) continue;
+            if (!estimates[k].transports) {
+                finished.push_back(candidates[k]);  // no ray arrived; a fresh draw may see what they missed
+                continue;
+            }
             HierarchicalLink link;
             link.receiver = candidates[k].receiver;
             link.source = candidates[k].source;
             std::copy(std::begin(estimates[k].factor), std::end(estimates[k].factor), link.factor);
             link.uncertainty = estimates[k].uncertainty;
-            const bool full = system_.links.size() + next.size() >= options_.max_links;
+            const bool full = system_.links.size() + next.size() + finished.size() >= options_.max_links;
             const Decision decision = full ? Decision::accept : decide(link);
             if (decision == Decision::accept && wants_split(link)) report_.limited = true;
-            follow(link, decision, next);
+            if (decision == Decision::accept)
+                finished.push_back(candidates[k]);
+            else
+                follow(link, decision, next);
         }
+        add_final_links(finished);
         candidates.swap(next);
+    }
+}
+
+void LinkRefiner::add_final_links(const std::vector<LinkCandidate>& finished) {
+    const std::vector<LinkEstimate> estimates = estimate(finished, 1);
+    for (std::size_t k = 0; k < finished.size(); ++k) {
+        if (!estimates[k].transports) continue;
+        HierarchicalLink link;
+        link.receiver = finished[k].receiver;
+        link.source = finished[k].source;
+        std::copy(std::begin(estimates[k].factor), std::end(estimates[k].factor), link.factor);
+        link.uncertainty = estimates[k].uncertainty;
+        system_.links.push_back(link);
     }
 }
 

@@ -46,7 +46,9 @@ class LinkRefiner {
     void follow(const HierarchicalLink& link, Decision decision, std::vector<LinkCandidate>& next);
     // Measures the exposure of elements split since the last pass.
     void measure_exposure();
-    std::vector<LinkEstimate> estimate(const std::vector<LinkCandidate>& candidates);
+    std::vector<LinkEstimate> estimate(const std::vector<LinkCandidate>& candidates, int draw);
+    // Links for the candidates refinement stopped at, from a fresh draw of shadow rays.
+    void add_final_links(const std::vector<LinkCandidate>& finished);
 
     HierarchicalSystem& system_;
     const LinkEstimator& estimator_;
