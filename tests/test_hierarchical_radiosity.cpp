@@ -45,9 +45,10 @@ std::vector<glm::dvec3> surface_power(const PatchMesh& mesh, std::span<const glm
 }
 
 // A closed cube whose every face emits E and reflects ρ: B = E / (1 − ρ) everywhere. Unrefined, the links
-// between whole faces give it to 1e-4. Refined, each leaf inherits the interpolated factors of its ancestors'
-// links; the mean stays within 3 % (1.9 % measured), and the worst leaves, the smallest ones in the cube's
-// corners where three faces meet, within 20 %.
+// between whole faces give it to 1e-4. Refined, a small leaf inherits the interpolated factors of all its
+// ancestors' links, which near a corner add up to more than the hemisphere (16 % more at the corners before
+// each leaf's factors were scaled to its measured form factor to the scene, 1 in a closed room); now every
+// leaf is within 0.1 %.
 TEST(Hierarchical, FurnaceGivesEOverOneMinusRho) {
     Scene scene = make_cube();
     for (Surface& s : scene.surfaces) {
@@ -69,9 +70,9 @@ TEST(Hierarchical, FurnaceGivesEOverOneMinusRho) {
                     tolerance, h.report.leaves, h.report.links, lo, hi, sum / area);
         const bool refined = h.report.leaves > 6;
         EXPECT_EQ(refined, tolerance < 0.01);
-        EXPECT_NEAR(sum / area, 2.0, refined ? 0.06 : 1e-4);
-        EXPECT_NEAR(lo, 2.0, refined ? 0.4 : 1e-4);
-        EXPECT_NEAR(hi, 2.0, refined ? 0.4 : 1e-4);
+        EXPECT_NEAR(sum / area, 2.0, refined ? 2e-3 : 1e-4);
+        EXPECT_NEAR(lo, 2.0, refined ? 2e-3 : 1e-4);
+        EXPECT_NEAR(hi, 2.0, refined ? 2e-3 : 1e-4);
     }
 }
 
@@ -89,7 +90,7 @@ TEST(Hierarchical, CornellAgainstAFineUniformSolve) {
     const std::vector<glm::dvec3> reference =
         surface_power(fine, whole_patch_radiosity(reference_system, fine, reference_solver->solution()));
 
-    for (double tolerance : {0.1, 0.03, 0.01}) {
+    for (double tolerance : {0.03, 0.01}) {
         HierarchicalOptions options;
         options.tolerance = tolerance;
         const auto start = std::chrono::steady_clock::now();
@@ -111,7 +112,7 @@ TEST(Hierarchical, CornellAgainstAFineUniformSolve) {
             tolerance, h.report.base_patches, h.report.elements, h.report.leaves, h.report.links,
             h.report.rounds, seconds, h.report.refine_seconds, h.report.solve_seconds,
             h.report.memory_bytes / 1e6, 100.0 * worst);
-        EXPECT_LT(worst, 0.04);
+        EXPECT_LT(worst, 0.025);  // 1.7 % and 0.7 % measured
         EXPECT_LT(h.report.links, 40'000u) << "links, against " << fine.size() << "² pairs of the reference";
     }
 }
@@ -142,6 +143,24 @@ TEST(Hierarchical, LinksGrowAboutLinearlyAndBoundsHold) {
     const Solved h = solve_hierarchical(scene, base, bounded);
     EXPECT_LE(h.report.elements, 2000u);
     EXPECT_TRUE(h.report.limited);
+}
+
+// The white room: the Cornell box closed, ρ = 0.95, where light bounces about 20 times and any excess or
+// shortfall of the leaves' form factors is multiplied as often. Nearly nothing escapes, and the power
+// absorbed matches the power emitted to within 3 % (2.2 % measured at --refine-tol 0.01).
+TEST(Hierarchical, AHighAlbedoClosedRoomKeepsItsEnergy) {
+    const Scene scene = make_builtin_scene("white-room");
+    HierarchicalOptions options;
+    options.tolerance = 0.01;
+    const Solved h = solve_hierarchical(scene, 4.0 * default_patch_size(scene), options);
+    const EnergyBalance balance = hierarchical_energy_balance(*h.system, h.radiosity);
+    const double emitted = balance.emitted.x + balance.emitted.y + balance.emitted.z;
+    const double absorbed = balance.absorbed.x + balance.absorbed.y + balance.absorbed.z;
+    const double escaped = balance.escaped.x + balance.escaped.y + balance.escaped.z;
+    std::printf("white room: %zu leaves, emitted %.6g, absorbed %.6g, escaped %.6g\n", h.report.leaves,
+                emitted, absorbed, escaped);
+    EXPECT_LT(escaped, 1e-3 * emitted);
+    EXPECT_NEAR(absorbed / emitted, 1.0, 0.03);
 }
 
 TEST(Hierarchical, BadOptionsAreInputErrors) {

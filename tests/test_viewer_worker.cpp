@@ -78,6 +78,23 @@ TEST(ViewerWorker, TakesTheStepsAskedForAndKeepsEachBounceAlone) {
     EXPECT_FALSE(snapshot.radiance->bounce(4));
 }
 
+// Hierarchical radiosity (the panel's subdivision choice): the geometry the render thread gets is the
+// leaves', not the base patches', and stepping shows what a pipeline of the same options shows.
+TEST(ViewerWorker, HierarchicalLeavesAreWhatIsDrawnAndStepped) {
+    PipelineOptions options = cornell(0.0);
+    options.subdivision.method = "hierarchical";
+    SolverWorker worker(options);
+    worker.request_steps(2);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(300)));
+    const SolverSnapshot snapshot = worker.snapshot();
+    ASSERT_TRUE(snapshot.error.empty()) << snapshot.error;
+    ASSERT_TRUE(snapshot.geometry && snapshot.radiance);
+    EXPECT_EQ(snapshot.statistics.subdivision, "hierarchical");
+    EXPECT_GT(snapshot.statistics.patches, 197u);  // more leaves than base patches
+    EXPECT_EQ(snapshot.radiance->step, 2u);
+    expect_near(snapshot.radiance->cumulative, radiance_after(options, 2));
+}
+
 TEST(ViewerWorker, ResetReturnsToTheEmissionWithoutRecomputingFormFactors) {
     const PipelineOptions options = cornell(100.0);
     SolverWorker worker(options);

@@ -110,7 +110,8 @@ void covered_points(std::span<const glm::dvec3> points, const glm::dvec3& normal
     covered.resize(points.size());
     for (std::size_t k = 0; k < points.size(); ++k) {
         bool inside = true;
-        for (int d = 0; d < kDirections && inside; ++d) inside = hits[k * kDirections + d].patch == RayHit::kBackFace;
+        for (int d = 0; d < kDirections && inside; ++d)
+            inside = hits[k * kDirections + d].patch == RayHit::kBackFace;
         covered[k] = inside ? 1 : 0;
     }
 }

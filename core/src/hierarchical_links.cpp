@@ -2,6 +2,7 @@
 
 #include "form_factors_analytic.hpp"
 #include "form_factors_coverage.hpp"
+#include "rad/hierarchical_radiosity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -88,9 +89,10 @@ constexpr AdaptiveRule kLinkRule{0.1, 0.5, 1.0, 3};
 
 }  // namespace
 
-double LinkEstimator::visibility(const ConvexPolygon& from, const glm::dvec3& from_normal, bool from_partly_covered,
-                                 const ConvexPolygon& to, const glm::dvec3& to_normal, bool to_partly_covered,
-                                 RandomStream& random, Scratch& s) const {
+double LinkEstimator::visibility(const ConvexPolygon& from, const glm::dvec3& from_normal,
+                                 bool from_partly_covered, const ConvexPolygon& to,
+                                 const glm::dvec3& to_normal, bool to_partly_covered, RandomStream& random,
+                                 Scratch& s) const {
     const auto count = static_cast<std::size_t>(rays_);
     s.strata.resize(2 * count);
     stratified_square(random, std::span(s.strata).first(count));
@@ -107,7 +109,8 @@ double LinkEstimator::visibility(const ConvexPolygon& from, const glm::dvec3& fr
     if (to_partly_covered) covered_points(s.to, to_normal, scene_, s.to_covered);
     s.rays.clear();
     for (std::size_t k = 0; k < count; ++k) {
-        if (!s.from_covered[k] && !s.to_covered[k]) s.rays.push_back(Ray{s.from[k], 0.0f, s.to[k] - s.from[k], 1.0f});
+        if (!s.from_covered[k] && !s.to_covered[k])
+            s.rays.push_back(Ray{s.from[k], 0.0f, s.to[k] - s.from[k], 1.0f});
     }
     if (s.rays.empty()) return -1.0;
     s.blocked.resize(s.rays.size());
@@ -121,6 +124,41 @@ double LinkEstimator::exposed_share(std::uint32_t element) const {
     const Element& e = tree_[element];
     const ConvexPolygon polygon = element_polygon(tree_, e);
     return 1.0 - covered_share(polygon.span(), e.shape.normal, scene_, seed_, element, offset_, kProbes);
+}
+
+double LinkEstimator::reaching_share(std::uint32_t element) const {
+    constexpr auto kRays = static_cast<std::size_t>(kReachingRays);
+    thread_local std::vector<glm::dvec2> origins, directions;
+    thread_local std::vector<glm::dvec3> points;
+    thread_local std::vector<std::uint8_t> covered;
+    thread_local std::vector<Ray> rays;
+    thread_local std::vector<RayHit> hits;
+    const Element& e = tree_[element];
+    const double exposure = exposure_[element];
+    if (!(exposure > 0.0)) return 0.0;
+    const ConvexPolygon polygon = element_polygon(tree_, e);
+    RandomStream random(seed_ ^ 0x7265616368ull, element);
+    origins.resize(kRays);
+    directions.resize(kRays);
+    stratified_square(random, origins);
+    stratified_square(random, directions);
+    points.resize(kRays);
+    for (std::size_t k = 0; k < kRays; ++k)
+        points[k] = point_on_convex_polygon(polygon.span(), origins[k]) + offset_ * e.shape.normal;
+    // From exposed points only: the covered part's share is the exposure's to say.
+    covered.assign(kRays, 0);
+    if (exposure < 1.0) covered_points(points, e.shape.normal, scene_, covered);
+    const Frame frame = frame_around(e.shape.normal);
+    rays.clear();
+    for (std::size_t k = 0; k < kRays; ++k)
+        if (!covered[k])
+            rays.push_back(Ray{points[k], 0.0f, frame.to_world(cosine_direction(directions[k])), 1e30f});
+    if (rays.empty()) return -1.0;
+    hits.resize(rays.size());
+    scene_.intersect(rays, hits);
+    const auto reached =
+        std::count_if(hits.begin(), hits.end(), [](const RayHit& h) { return h.patch < RayHit::kBackFace; });
+    return std::min(1.0, exposure) * static_cast<double>(reached) / static_cast<double>(rays.size());
 }
 
 LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch& scratch, int draw) const {
@@ -151,11 +189,11 @@ LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch
                         std::max(r, s));
     // The visibility between the exposed parts, with rays that always run from the lower index to the
     // higher, so both directions of a pair see the same.
-    const double visible =
-        r < s ? visibility(facing_receiver, receiver.shape.normal, receiver_partly, seen_source, source.shape.normal,
-                           source_partly, random, scratch)
-              : visibility(seen_source, source.shape.normal, source_partly, facing_receiver, receiver.shape.normal,
-                           receiver_partly, random, scratch);
+    const double visible = r < s
+                               ? visibility(facing_receiver, receiver.shape.normal, receiver_partly,
+                                            seen_source, source.shape.normal, source_partly, random, scratch)
+                               : visibility(seen_source, source.shape.normal, source_partly, facing_receiver,
+                                            receiver.shape.normal, receiver_partly, random, scratch);
     if (!(visible > 0.0)) return estimate;
     // The irradiance is a mean over the whole receiver, its covered part dark (× its exposure), and comes
     // from the exposed part of the source, whose radiosity is B_source / its exposure.
@@ -165,7 +203,8 @@ LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch
     estimate.transports = true;
     for (int c = 0; c < 4; ++c) estimate.factor[c] = static_cast<float>(factor[c] * visible * exposed_scale);
     estimate.uncertainty = static_cast<float>(
-        (departure(kernel, factor) * visible + 2.0 * unoccluded * std::min(visible, 1.0 - visible)) * exposed_scale);
+        (departure(kernel, factor) * visible + 2.0 * unoccluded * std::min(visible, 1.0 - visible)) *
+        exposed_scale);
     return estimate;
 }
 

@@ -13,8 +13,8 @@
 namespace rad {
 
 struct LinkEstimate {
-    bool facing = false;      // false: the two cannot see each other (facing away, or one wholly covered)
-    bool transports = false;  // false: they cannot, or none of the shadow rays arrived
+    bool facing = false;       // false: the two cannot see each other (facing away, or one wholly covered)
+    bool transports = false;   // false: they cannot, or none of the shadow rays arrived
     float factor[4] = {};      // F from receiver to source × visibility, per receiver corner
     float uncertainty = 0.0f;  // see HierarchicalLink::uncertainty
 };
@@ -43,10 +43,14 @@ class LinkEstimator {
     // `draw` picks an independent set of shadow rays: refinement decides on draw 0 and keeps the factor of
     // draw 1, because keeping the estimate it decided on would favour links whose rays happened to agree
     // (all blocked, or all open: no uncertainty), which biases the light they carry.
-    LinkEstimate operator()(std::uint32_t receiver, std::uint32_t source, Scratch& scratch, int draw = 0) const;
+    LinkEstimate operator()(std::uint32_t receiver, std::uint32_t source, Scratch& scratch,
+                            int draw = 0) const;
 
     // The share of an element that other geometry does not cover, by coverage probes.
     double exposed_share(std::uint32_t element) const;
+    // The element's form factor to the whole scene, times its exposure: the share of cosine-weighted rays
+    // from stratified points of it that reach the front of some surface (in a closed room 1 where exposed).
+    double reaching_share(std::uint32_t element) const;
 
   private:
     // The share of shadow rays between exposed points of the two polygons that arrive; ends on a side

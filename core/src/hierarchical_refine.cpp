@@ -113,7 +113,8 @@ std::vector<LinkEstimate> LinkRefiner::estimate(const std::vector<LinkCandidate>
                           if (progress_ && progress_->cancelled()) return;
                           LinkEstimator::Scratch& s = scratch.local();
                           for (std::size_t k = range.begin(); k < range.end(); ++k)
-                              estimates[k] = estimator_(candidates[k].receiver, candidates[k].source, s, draw);
+                              estimates[k] =
+                                  estimator_(candidates[k].receiver, candidates[k].source, s, draw);
                           if (progress_) progress_->advance(range.size());
                       });
     if (progress_ && progress_->cancelled()) throw Cancelled{};
@@ -126,6 +127,16 @@ void LinkRefiner::measure_exposure() {
         if (exposure[e] < 0.0f)
             exposure[e] = static_cast<float>(estimator_.exposed_share(static_cast<std::uint32_t>(e)));
     });
+}
+
+const std::vector<float>& LinkRefiner::measure_reaching() {
+    reaching_.resize(system_.tree.size(), -1.0f);
+    tbb::parallel_for(std::size_t(0), reaching_.size(), [&](std::size_t e) {
+        const auto element = static_cast<std::uint32_t>(e);
+        if (reaching_[e] < 0.0f && system_.tree[element].is_leaf())
+            reaching_[e] = static_cast<float>(estimator_.reaching_share(element));
+    });
+    return reaching_;
 }
 
 void LinkRefiner::refine(std::vector<LinkCandidate> candidates) {

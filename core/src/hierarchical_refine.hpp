@@ -46,6 +46,14 @@ class LinkRefiner {
     void follow(const HierarchicalLink& link, Decision decision, std::vector<LinkCandidate>& next);
     // Measures the exposure of elements split since the last pass.
     void measure_exposure();
+
+  public:
+    // Per element, its form factor to the whole scene times its exposure, measured for every leaf
+    // (negative: not measured).
+    const std::vector<float>& measure_reaching();
+
+  private:
+    std::vector<float> reaching_;
     std::vector<LinkEstimate> estimate(const std::vector<LinkCandidate>& candidates, int draw);
     // Links for the candidates refinement stopped at, from a fresh draw of shadow rays.
     void add_final_links(const std::vector<LinkCandidate>& finished);

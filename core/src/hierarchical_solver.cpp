@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <glm/common.hpp>
 
 #include "rad/hierarchical_radiosity.hpp"
@@ -73,9 +74,11 @@ void push_pull(const HierarchicalSystem& system, std::uint32_t e, const CornerIr
     CornerIrradiance irradiance;
     for (int c = 0; c < 4; ++c) irradiance[c] = above[c] + gathered[e][c];
     if (element.is_leaf()) {
-        const glm::dvec3 mean = element.is_triangle()
-                                    ? (irradiance[0] + irradiance[1] + irradiance[2]) / 3.0
-                                    : 0.25 * (irradiance[0] + irradiance[1] + irradiance[2] + irradiance[3]);
+        const double scale = system.leaf_scale.empty() ? 1.0 : static_cast<double>(system.leaf_scale[e]);
+        const glm::dvec3 mean =
+            scale * (element.is_triangle()
+                         ? (irradiance[0] + irradiance[1] + irradiance[2]) / 3.0
+                         : 0.25 * (irradiance[0] + irradiance[1] + irradiance[2] + irradiance[3]));
         if (!irradiance_out.empty()) irradiance_out[e] = mean;
         // Only the exposed part emits; B here is the mean over the whole leaf.
         out[e] = system.emission[e] * exposed(system, e) + system.reflectance[e] * mean;
@@ -158,6 +161,31 @@ void gather_push_pull(const HierarchicalSystem& system, std::span<const glm::dve
                           for (std::uint32_t b = range.begin(); b < range.end(); ++b)
                               push_pull(system, b, CornerIrradiance{}, gathered, out, leaf_irradiance);
                       });
+}
+
+void normalize_leaf_form_factors(HierarchicalSystem& system, std::span<const float> reaching) {
+    const std::size_t n = system.tree.size();
+    system.leaf_scale.clear();
+    // What each leaf gathers when every exposed part shines with radiosity 1: its links' form-factor sum
+    // over the scene, times its exposure.
+    std::vector<glm::dvec3> exposed_one(n), out(n), gathered(n, glm::dvec3(0.0));
+    for (std::size_t e = 0; e < n; ++e)
+        exposed_one[e] = glm::dvec3(exposed(system, static_cast<std::uint32_t>(e)));
+    gather_push_pull(system, exposed_one, out, gathered);
+    system.leaf_scale.assign(n, 1.0f);
+    for (std::uint32_t e = 0; e < n; ++e) {
+        if (!system.tree[e].is_leaf() || !(gathered[e].x > 0.0) || !(reaching[e] >= 0.0f)) continue;
+        // The measurement is a share of kReachingRays rays: move towards it only by what exceeds twice its
+        // standard error, so an open scene's leaves (where some rays leave) do not take on its noise, while
+        // in a closed room (no ray leaves, no noise) every leaf sums to exactly 1.
+        const double exposure = std::max(1e-6, exposed(system, e));
+        const double measured = reaching[e], links = gathered[e].x;
+        const double share = std::min(1.0, measured / exposure);  // of the rays from exposed points
+        const double noise = exposure * std::sqrt(share * (1.0 - share) / kReachingRays);
+        const double excess = std::max(0.0, std::abs(measured - links) - 2.0 * noise);
+        const double target = links + std::copysign(excess, measured - links);
+        system.leaf_scale[e] = static_cast<float>(std::clamp(target / links, 0.0, 4.0));
+    }
 }
 
 EnergyBalance hierarchical_energy_balance(const HierarchicalSystem& system,

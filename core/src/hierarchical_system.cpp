@@ -136,7 +136,8 @@ std::size_t HierarchicalSystem::memory_bytes() const {
     return tree.memory_bytes() + links.capacity() * sizeof(HierarchicalLink) +
            receiver_runs.capacity() * sizeof(std::uint32_t) +
            (reflectance.capacity() + emission.capacity()) * sizeof(glm::dvec3) +
-           (leaves.capacity() + leaf_index.capacity()) * sizeof(std::uint32_t);
+           (leaves.capacity() + leaf_index.capacity()) * sizeof(std::uint32_t) +
+           (exposure.capacity() + leaf_scale.capacity()) * sizeof(float);
 }
 
 std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene, const PatchMesh& base,
@@ -175,6 +176,7 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
         if (!changed) break;
         ++report.rounds;
         index_links(*system);
+        normalize_leaf_form_factors(*system, refiner.measure_reaching());
         const auto solve_start = std::chrono::steady_clock::now();
         if (progress) progress->begin("solving between rounds", 0);
         solve_roughly(*system, refiner.radiosity());

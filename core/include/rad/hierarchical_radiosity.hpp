@@ -76,6 +76,13 @@ struct HierarchicalSystem {
     // Per element, the share of its area that other geometry does not cover (a box on a floor covers part
     // of the floor); negative until measured. Light leaves only from the exposed part.
     std::vector<float> exposure;
+    // Per element (leaves only; 1 elsewhere), what scales the irradiance a leaf gathers so that its form
+    // factors sum to its form factor to the whole scene, measured by rays (1 in a closed room). Each
+    // link's factor is right on average over its receiver, but interpolated to a small leaf, the links of
+    // all its ancestors can add up to a few per cent more or less than the whole scene (most in corners
+    // where three surfaces meet); at high albedo that error would be multiplied bounce after bounce.
+    // Empty: no scaling.
+    std::vector<float> leaf_scale;
     std::vector<std::uint32_t> leaves;      // leaf elements; patch k of leaf_patches is leaves[k]
     std::vector<std::uint32_t> leaf_index;  // per element, its place in leaves (kNone for inner ones)
     PatchMesh leaf_patches;
@@ -102,6 +109,13 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
 // given (one per element), leaf_irradiance receives each leaf's mean irradiance.
 void gather_push_pull(const HierarchicalSystem& system, std::span<const glm::dvec3> radiosity,
                       std::span<glm::dvec3> out, std::span<glm::dvec3> leaf_irradiance = {});
+
+// Rays per leaf that measure its form factor to the whole scene.
+inline constexpr int kReachingRays = 64;
+
+// Sets leaf_scale from the links as they stand and, per element, its measured form factor to the whole
+// scene times its exposure (negative: not measured, no scaling).
+void normalize_leaf_form_factors(HierarchicalSystem& system, std::span<const float> reaching);
 
 // Emitted, absorbed and escaped power for a solution (one value per leaf, a solver's solution()), as
 // energy_balance gives them for uniform patches: escaped is what leaves each leaf beyond the elements its
