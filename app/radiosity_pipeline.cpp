@@ -45,7 +45,6 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
                               : subdivision_ == Subdivision::adaptive   ? kAdaptiveBaseScale
                                                                         : 1.0;
     loaded_ = load_and_mesh(options.scene, base_scale);
-    display_ = build_display_mesh(loaded_.patches, options.display);
     seconds_.mesh = clock.seconds();
     solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
 }
@@ -89,7 +88,7 @@ void RadiosityPipeline::prepare_adaptive(Progress* progress) {
 
 void RadiosityPipeline::use_patches(const PatchMesh& patches) {
     patches_ = &patches;
-    display_ = build_display_mesh(patches, options_.display);
+    display_.reset();
     solver_options_ = rad::solver_options(options_.solver, patches.size());
 }
 
@@ -156,14 +155,19 @@ void RadiosityPipeline::restart_solver(SolverMethod method, const SolverOptions&
     solver_options_ = options;
 }
 
+const DisplayMesh& RadiosityPipeline::display() const {
+    if (!display_) display_.emplace(build_display_mesh(patches(), options_.display));
+    return *display_;
+}
+
 EnergyBalance RadiosityPipeline::energy_balance() const {
     if (hierarchy_) return hierarchical_energy_balance(*hierarchy_, solver_->solution());
     return rad::energy_balance(*system_, solver_->solution());
 }
 
 std::vector<glm::vec3> RadiosityPipeline::vertex_radiance() const {
-    if (!solver_) return std::vector<glm::vec3>(display_.vertex_count(), glm::vec3(0.0f));
-    return rad::vertex_radiance(display_, solver_->display_solution());
+    if (!solver_) return std::vector<glm::vec3>(display().vertex_count(), glm::vec3(0.0f));
+    return rad::vertex_radiance(display(), solver_->display_solution());
 }
 
 }  // namespace rad

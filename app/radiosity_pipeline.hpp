@@ -67,7 +67,8 @@ class RadiosityPipeline {
     const HierarchicalReport& hierarchical_report() const { return hierarchical_report_; }
     // Adaptive subdivision's passes (empty otherwise).
     const AdaptiveReport& adaptive_report() const { return adaptive_report_; }
-    const DisplayMesh& display() const { return display_; }
+    // Built on first use, so `solve` never pays for it.
+    const DisplayMesh& display() const;
     const RadiositySystem& system() const { return *system_; }
     const Solver& solver() const { return *solver_; }
     const FormFactorReport& form_factor_report() const { return form_factor_report_; }
@@ -97,7 +98,7 @@ class RadiosityPipeline {
     std::optional<PatchMesh> adaptive_patches_;
     HierarchicalReport hierarchical_report_;
     AdaptiveReport adaptive_report_;
-    DisplayMesh display_;
+    mutable std::optional<DisplayMesh> display_;  // of patches(), once asked for
     SolverMethod method_;
     SolverOptions solver_options_;
     std::optional<RadiositySystem> system_;
