@@ -30,9 +30,9 @@ std::vector<glm::dvec3> emitted(const HierarchicalSystem& system) {
 using CornerIrradiance = std::array<glm::dvec3, 4>;
 
 // Irradiance gathered by each element along its own links, at its corners.
-std::vector<CornerIrradiance> gather_links(const HierarchicalSystem& system,
-                                           std::span<const glm::dvec3> radiosity) {
-    std::vector<CornerIrradiance> gathered(system.tree.size(), CornerIrradiance{});
+// `gathered` is all zero on entry and holds one entry per element; only receivers' entries are written.
+void gather_links(const HierarchicalSystem& system, std::span<const glm::dvec3> radiosity,
+                  std::span<CornerIrradiance> gathered) {
     const std::size_t runs = system.receiver_runs.empty() ? 0 : system.receiver_runs.size() - 1;
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, runs, 256), [&](const tbb::blocked_range<std::size_t>& range) {
@@ -47,7 +47,13 @@ std::vector<CornerIrradiance> gather_links(const HierarchicalSystem& system,
                 gathered[system.links[first].receiver] = sum;
             }
         });
-    return gathered;
+}
+
+// Zeroes what gather_links wrote: O(receivers), where clearing the whole buffer each step would be
+// O(elements) and allocating it anew a million-element page-fault storm per step.
+void clear_gathered(const HierarchicalSystem& system, std::span<CornerIrradiance> gathered) {
+    for (std::size_t k = 0; k + 1 < system.receiver_runs.size(); ++k)
+        gathered[system.links[system.receiver_runs[k]].receiver] = CornerIrradiance{};
 }
 
 // The irradiance at the children's corners, interpolated from the parent's (ElementTree::split's layout).
@@ -154,13 +160,19 @@ class HierarchicalSolver final : public SolverBase {
 
 void gather_push_pull(const HierarchicalSystem& system, std::span<const glm::dvec3> radiosity,
                       std::span<glm::dvec3> out, std::span<glm::dvec3> leaf_irradiance) {
-    const std::vector<CornerIrradiance> gathered = gather_links(system, radiosity);
+    // Kept between steps on this thread (a solver steps on one thread), all zero between calls. The
+    // lambdas below run on other threads, so they must see it through `gathered`, not by its name.
+    thread_local std::vector<CornerIrradiance> buffer;
+    if (buffer.size() < system.tree.size()) buffer.resize(system.tree.size(), CornerIrradiance{});
+    const std::span<CornerIrradiance> gathered(buffer);
+    gather_links(system, radiosity, gathered);
     const auto bases = static_cast<std::uint32_t>(system.tree.base_size());
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, bases, 16),
                       [&](const tbb::blocked_range<std::uint32_t>& range) {
                           for (std::uint32_t b = range.begin(); b < range.end(); ++b)
                               push_pull(system, b, CornerIrradiance{}, gathered, out, leaf_irradiance);
                       });
+    clear_gathered(system, gathered);
 }
 
 void normalize_leaf_form_factors(HierarchicalSystem& system, std::span<const float> reaching) {
