@@ -1,26 +1,12 @@
 #include "radiosity_pipeline.hpp"
 
 #include <algorithm>
-#include <chrono>
 
 #include "form_factor_options.hpp"
 #include "rad/error.hpp"
+#include "rad/stopwatch.hpp"
 
 namespace rad {
-
-namespace {
-
-class Stopwatch {
-  public:
-    double seconds() const {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
-
-  private:
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
-}  // namespace
 
 void add_pipeline_options(CLI::App& command, PipelineOptions& options) {
     add_scene_options(command, options.scene);

@@ -4,6 +4,7 @@
 #include <glm/vec3.hpp>
 #include <span>
 
+#include "luminance.hpp"
 #include "rad/element_tree.hpp"
 #include "rad/patches.hpp"
 #include "rad/radiosity_system.hpp"
@@ -22,11 +23,6 @@ struct SolvedLeaves {
     double exposed_share(std::size_t i) const { return system.area[i] / mesh.patches[i].area; }
     std::uint32_t base_patch(std::size_t i) const { return tree[elements[i]].base_patch; }
 };
-
-// Rec. 709 luminance: the criteria compare brightness, not colour.
-inline double luminance(const glm::dvec3& c) {
-    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
-}
 
 // Leaves whose exposed share is below this are under other geometry (a floor under a box): their radiosity
 // is of a sliver nobody sees, so the gradient criterion does not compare them.

@@ -1,6 +1,5 @@
 #include "rad/adaptive_subdivision.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -11,20 +10,11 @@
 #include "form_factors_hemisphere.hpp"
 #include "rad/embree_scene.hpp"
 #include "rad/error.hpp"
+#include "rad/stopwatch.hpp"
 
 namespace rad {
 
 namespace {
-
-class Stopwatch {
-  public:
-    double seconds() const {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
-
-  private:
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 void check_options(const PatchMesh& base, const AdaptiveOptions& options) {
     if (!(options.min_patch_size >= 0.0) || !std::isfinite(options.min_patch_size))

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -71,29 +72,6 @@ double covered_share(const PatchMesh& patches, const RayScene& scene, std::uint3
     return covered_weight(hits, weights);
 }
 
-double covered_share(std::span<const glm::dvec3> polygon, const glm::dvec3& normal, const RayScene& scene,
-                     std::uint64_t seed, std::uint64_t key, double offset, int count) {
-    thread_local std::vector<glm::dvec2> strata;
-    thread_local std::vector<Ray> probes;
-    thread_local std::vector<double> weights;
-    thread_local std::vector<RayHit> hits;
-    strata.resize(static_cast<std::size_t>(count));
-    RandomStream random(seed ^ kProbeSalt, key);
-    stratified_square(random, strata, false);
-    const Frame frame = frame_around(normal);
-    const std::array<glm::dvec3, kDirections> local = probe_directions();
-    probes.resize(strata.size() * kDirections);
-    hits.resize(probes.size());
-    weights.assign(strata.size(), 1.0);
-    for (std::size_t k = 0; k < strata.size(); ++k) {
-        const glm::dvec3 origin = point_on_convex_polygon(polygon, strata[k]) + offset * normal;
-        for (int d = 0; d < kDirections; ++d)
-            probes[k * kDirections + d] = Ray{origin, 0.0f, frame.to_world(local[d]), 1e30f};
-    }
-    scene.intersect(probes, hits);
-    return covered_weight(hits, weights);
-}
-
 void covered_points(std::span<const glm::dvec3> points, const glm::dvec3& normal, const RayScene& scene,
                     std::vector<std::uint8_t>& covered) {
     thread_local std::vector<Ray> probes;
@@ -114,6 +92,22 @@ void covered_points(std::span<const glm::dvec3> points, const glm::dvec3& normal
             inside = hits[k * kDirections + d].patch == RayHit::kBackFace;
         covered[k] = inside ? 1 : 0;
     }
+}
+
+double covered_share(std::span<const glm::dvec3> polygon, const glm::dvec3& normal, const RayScene& scene,
+                     std::uint64_t seed, std::uint64_t key, double offset, int count) {
+    thread_local std::vector<glm::dvec2> strata;
+    thread_local std::vector<glm::dvec3> points;
+    thread_local std::vector<std::uint8_t> covered;
+    strata.resize(static_cast<std::size_t>(count));
+    RandomStream random(seed ^ kProbeSalt, key);
+    stratified_square(random, strata, false);
+    points.resize(strata.size());
+    for (std::size_t k = 0; k < strata.size(); ++k)
+        points[k] = point_on_convex_polygon(polygon, strata[k]) + offset * normal;
+    covered_points(points, normal, scene, covered);
+    const auto inside = std::count(covered.begin(), covered.end(), std::uint8_t{1});
+    return strata.empty() ? 0.0 : static_cast<double>(inside) / static_cast<double>(strata.size());
 }
 
 void measure_coverage(const PatchMesh& patches, const RayScene& scene, std::uint64_t seed,

@@ -3,6 +3,7 @@
 #include "form_factors_analytic.hpp"
 #include "form_factors_coverage.hpp"
 #include "rad/hierarchical_radiosity.hpp"
+#include "rad/polygon.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,13 +20,6 @@ ConvexPolygon element_polygon(const ElementTree& tree, const Element& e) {
     return polygon;
 }
 
-double polygon_area(const ConvexPolygon& p) {
-    glm::dvec3 sum(0.0);
-    for (std::size_t k = 1; k + 1 < p.count; ++k)
-        sum += glm::cross(p.corners[k] - p.corners[0], p.corners[k + 1] - p.corners[0]);
-    return 0.5 * glm::length(sum);
-}
-
 glm::dvec3 corner_mean(const ConvexPolygon& p) {
     glm::dvec3 sum(0.0);
     for (std::size_t k = 0; k < p.count; ++k) sum += p.corners[k];
@@ -34,13 +28,12 @@ glm::dvec3 corner_mean(const ConvexPolygon& p) {
 
 // The point-to-polygon factor over a receiver of n = 3 or 4 corners: at its corners (pulled in a hair, where
 // the kernel is finite even at an edge the source touches) and at the points halfway between its centre and
-// its corners (a rule for the mean that is exact when the kernel varies linearly).
+// its corners (where the interpolation between the corners is checked).
 struct KernelSamples {
     int n = 4;
     double corner[4] = {};
     double inner[4] = {};
 
-    double inner_mean() const { return (inner[0] + inner[1] + inner[2] + (n == 4 ? inner[3] : 0.0)) / n; }
     // The interpolation between corner values v at inner point k.
     double interpolated(const double* v, int k) const {
         if (n == 3) return (4.0 * v[k] + v[(k + 1) % 3] + v[(k + 2) % 3]) / 6.0;
@@ -173,7 +166,8 @@ LinkEstimate LinkEstimator::operator()(std::uint32_t r, std::uint32_t s, Scratch
     const ConvexPolygon facing_receiver =
         clip_to_front(whole_receiver, source.shape.centroid, source.shape.normal);
     if (facing_receiver.empty()) return estimate;
-    if (!(polygon_area(facing_receiver) > 0.0) || !(polygon_area(seen_source) > 0.0)) return estimate;
+    if (!(polygon_area(facing_receiver.span()) > 0.0) || !(polygon_area(seen_source.span()) > 0.0))
+        return estimate;
     const KernelSamples kernel = kernel_samples(whole_receiver, receiver.shape.normal, seen_source);
     // The mean by adaptive quadrature (as the analytic estimator has it: to 0.2 % even for elements that
     // share an edge, where the kernel is steepest); the corners give only the slope.

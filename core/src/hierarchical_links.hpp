@@ -21,7 +21,7 @@ struct LinkEstimate {
 
 // Estimates links between elements of one tree, from any number of threads at once (each with its own
 // Scratch). The unoccluded factor is the point-to-polygon factor (exact for the whole source): its mean over
-// the receiver by a four-point rule, its variation from its values at the receiver's corners, and its
+// the receiver by adaptive quadrature, its variation from its values at the receiver's corners, and its
 // uncertainty from how far the inner points stray from the interpolation between the corners. Visibility is
 // the share of shadow rays between stratified points of the two that arrive; rays are seeded by the pair, so
 // estimates do not depend on threads or order.

@@ -6,15 +6,9 @@
 
 #include <algorithm>
 
+#include "luminance.hpp"
+
 namespace rad {
-
-namespace {
-
-double luminance(const glm::dvec3& c) {
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
-
-}  // namespace
 
 LinkRefiner::LinkRefiner(HierarchicalSystem& system, const LinkEstimator& estimator,
                          const HierarchicalOptions& options, double min_edge, HierarchicalReport& report,

@@ -1,7 +1,6 @@
 // Building a HierarchicalSystem: the first links between base patches, rounds of refinement and solving,
 // and the leaves as patches.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <string>
@@ -9,8 +8,10 @@
 #include "form_factors_coverage.hpp"
 #include "form_factors_hemisphere.hpp"
 #include "hierarchical_refine.hpp"
+#include "luminance.hpp"
 #include "rad/error.hpp"
 #include "rad/hierarchical_radiosity.hpp"
+#include "rad/stopwatch.hpp"
 
 namespace rad {
 
@@ -21,14 +22,6 @@ constexpr std::size_t kMaxBasePatches = 20'000;
 // Jacobi steps between rounds: the oracle needs the radiosity roughly, not converged.
 constexpr int kRoundSteps = 64;
 constexpr double kRoundTolerance = 1e-3;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-double luminance(const glm::dvec3& c) {
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
 
 void check_options(const HierarchicalOptions& o, std::size_t base_patches) {
     if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance))
@@ -112,9 +105,6 @@ double link_epsilon(const HierarchicalSystem& system, std::span<const glm::dvec3
 
 void finish_leaves(HierarchicalSystem& system) {
     system.leaves = system.tree.leaves();
-    system.leaf_index.assign(system.tree.size(), Element::kNone);
-    for (std::size_t k = 0; k < system.leaves.size(); ++k)
-        system.leaf_index[system.leaves[k]] = static_cast<std::uint32_t>(k);
     system.leaf_patches = system.tree.leaf_mesh(system.leaves);
     RadiositySystem& leaf = system.leaf_system;
     const std::size_t n = system.leaves.size();
@@ -136,7 +126,7 @@ std::size_t HierarchicalSystem::memory_bytes() const {
     return tree.memory_bytes() + links.capacity() * sizeof(HierarchicalLink) +
            receiver_runs.capacity() * sizeof(std::uint32_t) +
            (reflectance.capacity() + emission.capacity()) * sizeof(glm::dvec3) +
-           (leaves.capacity() + leaf_index.capacity()) * sizeof(std::uint32_t) +
+           leaves.capacity() * sizeof(std::uint32_t) +
            (exposure.capacity() + leaf_scale.capacity()) * sizeof(float);
 }
 
@@ -167,20 +157,20 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
                                   o.seed);
     LinkRefiner refiner(*system, estimator, o, report.min_patch_size, report, progress);
     for (int round = 0; round < std::max(1, o.rounds); ++round) {
-        const auto start = std::chrono::steady_clock::now();
+        const Stopwatch refine_clock;
         refiner.set_epsilon(link_epsilon(*system, refiner.radiosity(), o.tolerance, round > 0));
         if (progress) progress->begin("linking elements, round " + std::to_string(round + 1), 0);
         const bool changed =
             round == 0 ? (refiner.refine(first_candidates(base)), true) : refiner.refine_again();
-        report.refine_seconds += seconds_since(start);
+        report.refine_seconds += refine_clock.seconds();
         if (!changed) break;
         ++report.rounds;
         index_links(*system);
         normalize_leaf_form_factors(*system, refiner.measure_reaching());
-        const auto solve_start = std::chrono::steady_clock::now();
+        const Stopwatch solve_clock;
         if (progress) progress->begin("solving between rounds", 0);
         solve_roughly(*system, refiner.radiosity());
-        report.solve_seconds += seconds_since(solve_start);
+        report.solve_seconds += solve_clock.seconds();
     }
     finish_leaves(*system);
     report.elements = system->tree.size();

@@ -3,17 +3,10 @@
 #include <array>
 #include <glm/geometric.hpp>
 
+#include "luminance.hpp"
 #include "path_tracer_paths.hpp"
 
 namespace rad::path_tracing {
-
-namespace {
-
-double luminance(const glm::dvec3& c) {
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
-
-}  // namespace
 
 glm::dvec3 point_on_patch(const PatchMesh& patches, std::uint32_t patch, glm::dvec2 u) {
     const glm::uvec4& c = patches.corners[patch];

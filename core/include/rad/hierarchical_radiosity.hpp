@@ -83,8 +83,7 @@ struct HierarchicalSystem {
     // where three surfaces meet); at high albedo that error would be multiplied bounce after bounce.
     // Empty: no scaling.
     std::vector<float> leaf_scale;
-    std::vector<std::uint32_t> leaves;      // leaf elements; patch k of leaf_patches is leaves[k]
-    std::vector<std::uint32_t> leaf_index;  // per element, its place in leaves (kNone for inner ones)
+    std::vector<std::uint32_t> leaves;  // leaf elements; patch k of leaf_patches is leaves[k]
     PatchMesh leaf_patches;
     // Area, reflectance and emission per leaf, for what reads a RadiositySystem (reports, JSON). As with
     // uniform patches, the area is the exposed area and a solver's solution is the radiosity of the exposed
