@@ -11,6 +11,9 @@ namespace rad {
 
 namespace {
 
+// More threads than any machine this runs on has; a larger count is a typo, and TBB would try to honour it.
+constexpr std::size_t kMaxThreads = 1024;
+
 // TBB takes its thread limit from a global_control object for as long as the object lives, so the limit
 // the command line asked for lives until the process ends.
 void limit_threads(std::size_t threads) {
@@ -47,7 +50,7 @@ void add_form_factor_options(CLI::App& command, FormFactorOptions& options) {
         .add_option_function<std::size_t>(
             "--threads", [](const std::size_t& threads) { limit_threads(threads); },
             "Threads to use (default: all cores)")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(std::size_t{1}, kMaxThreads));
     command
         .add_option(
             "--max-memory", options.max_memory_bytes,

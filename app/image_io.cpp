@@ -63,6 +63,14 @@ RadianceImage read_pfm(const std::string& path) {
     if (magic != "PF" || image.width <= 0 || image.height <= 0 || scale >= 0.0) {
         throw InputError(path + ": not a little-endian RGB PFM image");
     }
+    // The header's size is checked against the file's before anything is allocated for it.
+    std::error_code ec;
+    const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+    const double pixel_bytes = static_cast<double>(image.width) * image.height * sizeof(glm::vec3);
+    if (ec || pixel_bytes > static_cast<double>(file_bytes)) {
+        throw InputError(path + ": PFM header declares " + std::to_string(image.width) + "x" +
+                         std::to_string(image.height) + " pixels, more than the file holds");
+    }
     image.pixels.resize(static_cast<std::size_t>(image.width) * image.height);
     for (int y = image.height - 1; y >= 0; --y) {
         in.read(reinterpret_cast<char*>(&image.pixels[static_cast<std::size_t>(y) * image.width]),

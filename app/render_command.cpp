@@ -13,6 +13,7 @@
 #include "gl/headless_context.hpp"
 #include "gl_platform_option.hpp"
 #include "image_io.hpp"
+#include "number_checks.hpp"
 #include "rad/camera_view.hpp"
 #include "rad/error.hpp"
 #include "radiosity_pipeline.hpp"
@@ -128,9 +129,10 @@ CommandRunner add_render_command(CLI::App& app) {
         "ex,ey,ez,tx,ty,tz[,ux,uy,uz]: eye, target and up (default: the scene's camera, or one "
         "that frames the scene)");
     render->add_option("--fov", options->fov, "Vertical field of view in degrees (default: the camera's own)")
-        ->check(CLI::Range(1.0, 179.0));
+        ->check(finite_range(1.0, 179.0));
     render
         ->add_option("--exposure", options->exposure, "PNG only: multiply radiance by 2^EXPOSURE before sRGB")
+        ->check(finite_range(-64.0, 64.0))
         ->capture_default_str();
     render->add_flag("--flat", options->flat, "Show each patch's own radiosity instead of interpolating");
     render->add_flag("--outline", options->outline, "Draw the patches' edges");

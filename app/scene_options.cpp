@@ -3,21 +3,10 @@
 #include <cmath>
 #include <iostream>
 
+#include "number_checks.hpp"
 #include "rad/scene_loader.hpp"
 
 namespace rad {
-
-CLI::Validator positive_number() {
-    return CLI::Validator(
-        [](std::string& text) -> std::string {
-            double value = 0.0;
-            if (!CLI::detail::lexical_cast(text, value) || !(value > 0.0) || !std::isfinite(value)) {
-                return "must be a positive number, not '" + text + "'";
-            }
-            return {};
-        },
-        "POSITIVE");
-}
 
 void add_scene_options(CLI::App& command, SceneOptions& options) {
     command

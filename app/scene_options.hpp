@@ -16,9 +16,6 @@ struct SceneOptions {
 
 void add_scene_options(CLI::App& command, SceneOptions& options);
 
-// A CLI11 check that accepts finite numbers above zero, with a message naming the value.
-CLI::Validator positive_number();
-
 struct LoadedScene {
     Scene scene;
     PatchMesh patches;

@@ -1,5 +1,6 @@
 #include "subdivision_options.hpp"
 
+#include "number_checks.hpp"
 #include "rad/error.hpp"
 #include "scene_options.hpp"
 

@@ -64,5 +64,21 @@ TEST(ImageIo, BadTargetsLeaveNothingBehind) {
     EXPECT_EQ(files, 1u);
 }
 
+// A forged header does not make the reader allocate what it declares.
+TEST(ImageIo, APfmHeaderLargerThanItsFileIsRefused) {
+    test::TempDir dir;
+    const std::string path = dir.write("forged.pfm", "PF\n100000 100000\n-1.0\n" + std::string(48, '\0'));
+    try {
+        read_image(path);
+        ADD_FAILURE() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("100000x100000 pixels, more than the file holds"),
+                  std::string::npos)
+            << e.what();
+    }
+    const std::string whole = dir.write("two.pfm", "PF\n2 1\n-1.0\n" + std::string(24, '\0'));
+    EXPECT_EQ(read_image(whole).pixels.size(), 2u);
+}
+
 }  // namespace
 }  // namespace rad

@@ -1,7 +1,7 @@
+#include <tiny_obj_loader.h>
 #include <filesystem>
 #include <map>
 #include <set>
-#include <tiny_obj_loader.h>
 #include <utility>
 
 #include "obj_syntax.hpp"
@@ -20,17 +20,52 @@ struct MaterialLibraries {
     std::map<std::string, std::string> defined_at;  // material name -> "file:line"
 };
 
+[[noreturn]] void refuse_library(const std::string& obj_path, const ObjLibrary& lib, const std::string& why) {
+    throw InputError(obj_path + ":" + std::to_string(lib.line) + ": material library " +
+                     quote_for_message(lib.name) + " " + why);
+}
+
+// A scene names its materials, not arbitrary files: the library must lie in the scene's folder or below it,
+// reached without links, so a scene cannot read (and echo in messages) files its author did not ship with it.
+// Returns the path to read, or empty when the library does not exist (a warning, not an error).
+std::filesystem::path resolve_material_library(const std::string& obj_path, const ObjLibrary& lib) {
+    namespace fs = std::filesystem;
+    const fs::path name(lib.name);
+    if (name.is_absolute())
+        refuse_library(obj_path, lib, "is an absolute path; it must lie in the scene's folder");
+    const fs::path relative = name.lexically_normal();
+    if (relative.empty() || *relative.begin() == "..") {
+        refuse_library(obj_path, lib, "reaches outside the scene's folder");
+    }
+    fs::path path = fs::path(obj_path).parent_path();
+    for (const fs::path& part : relative) {
+        path /= part;
+        std::error_code ec;
+        const fs::file_status status = fs::symlink_status(path, ec);
+        if (status.type() == fs::file_type::not_found) return {};
+        if (ec) refuse_library(obj_path, lib, "cannot be inspected: " + ec.message());
+        if (fs::is_symlink(status))
+            refuse_library(obj_path, lib, "is reached through a link (" + path.string() + ")");
+    }
+    std::error_code ec;
+    if (!fs::is_regular_file(fs::symlink_status(path, ec)))
+        refuse_library(obj_path, lib, "is not a regular file");
+    return path;
+}
+
 MaterialLibraries read_material_libraries(const std::string& obj_path, const ObjFacts& facts,
                                           std::vector<std::string>& warnings) {
     MaterialLibraries libs;
-    const std::filesystem::path folder = std::filesystem::path(obj_path).parent_path();
     for (const ObjLibrary& lib : facts.libraries) {
-        const std::string mtl_path = (folder / lib.name).string();
-        if (!std::filesystem::is_regular_file(mtl_path)) {
-            warnings.push_back(obj_path + ":" + std::to_string(lib.line) + ": material library '" + lib.name +
-                               "' not found; its materials fall back to the default (reflectance 0.5, no emission)");
+        const std::filesystem::path mtl = resolve_material_library(obj_path, lib);
+        if (mtl.empty()) {
+            warnings.push_back(
+                obj_path + ":" + std::to_string(lib.line) + ": material library " +
+                quote_for_message(lib.name) +
+                " not found; its materials fall back to the default (reflectance 0.5, no emission)");
             continue;
         }
+        const std::string mtl_path = mtl.string();
         const std::string text = read_text_file(mtl_path);
         for (const auto& [name, line] : check_mtl_text(text, mtl_path)) {
             libs.defined_at.emplace(name, mtl_path + ":" + std::to_string(line));
@@ -41,7 +76,9 @@ MaterialLibraries read_material_libraries(const std::string& obj_path, const Obj
     return libs;
 }
 
-std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+std::string first_line(const std::string& text) {
+    return text.substr(0, text.find('\n'));
+}
 
 Material to_material(const tinyobj::material_t& m, const MaterialLibraries& libs) {
     Material material;
@@ -55,8 +92,9 @@ Material to_material(const tinyobj::material_t& m, const MaterialLibraries& libs
 
 // One group per (shape, material) pair: `usemtl` runs within an object become surfaces of their own.
 class GroupTable {
-public:
-    GroupTable(PolygonSoup& soup, const std::vector<Material>& materials) : soup_(soup), materials_(materials) {}
+  public:
+    GroupTable(PolygonSoup& soup, const std::vector<Material>& materials)
+        : soup_(soup), materials_(materials) {}
 
     std::uint32_t group(const tinyobj::shape_t& shape, std::size_t shape_index, int material_id) {
         const auto key = std::make_pair(shape_index, material_id);
@@ -66,7 +104,7 @@ public:
         return index_[key] = static_cast<std::uint32_t>(soup_.groups.size() - 1);
     }
 
-private:
+  private:
     static std::string group_name(const tinyobj::shape_t& shape, const Material& material) {
         const std::set<int> ids(shape.mesh.material_ids.begin(), shape.mesh.material_ids.end());
         if (shape.name.empty()) return material.name;
@@ -78,8 +116,8 @@ private:
     std::map<std::pair<std::size_t, int>, std::uint32_t> index_;
 };
 
-PolygonSoup to_soup(const std::string& path, const tinyobj::ObjReader& reader, const std::vector<Material>& materials,
-                    std::vector<std::string>& warnings) {
+PolygonSoup to_soup(const std::string& path, const tinyobj::ObjReader& reader,
+                    const std::vector<Material>& materials, std::vector<std::string>& warnings) {
     PolygonSoup soup;
     soup.source = path;
     const auto& v = reader.GetAttrib().vertices;

@@ -11,7 +11,7 @@ namespace {
 
 // Walks a text line by line, keeping the line number for messages.
 class LineReader {
-public:
+  public:
     LineReader(std::string_view text, const std::string& path) : text_(text), path_(path) {}
 
     bool next(std::string_view& line) {
@@ -29,21 +29,16 @@ public:
     }
     std::size_t number() const { return number_; }
 
-private:
+  private:
     std::string_view text_;
     const std::string& path_;
     std::size_t pos_ = 0;
     std::size_t number_ = 0;
 };
 
-std::string quoted(std::string_view word) {
-    constexpr std::size_t kMaxShown = 40;
-    return "'" + std::string(word.substr(0, kMaxShown)) + (word.size() > kMaxShown ? "...'" : "'");
-}
-
 double number_at(const LineReader& reader, std::string_view word) {
     double value = 0.0;
-    if (!parse_number(word, value)) reader.fail("malformed number " + quoted(word));
+    if (!parse_number(word, value)) reader.fail(bad_number_message(word));
     return value;
 }
 
@@ -58,7 +53,7 @@ void check_numbers(const LineReader& reader, const std::vector<std::string_view>
     for (std::size_t i = 1; i < words.size(); ++i) {
         const double value = number_at(reader, words[i]);
         if (must_be_finite && !std::isfinite(value)) {
-            reader.fail("coordinate " + quoted(words[i]) + " is not a finite number");
+            reader.fail("coordinate " + quote_for_message(words[i]) + " is not a finite number");
         }
     }
 }
@@ -66,7 +61,8 @@ void check_numbers(const LineReader& reader, const std::vector<std::string_view>
 // One index of a face corner ("3", "-1"), resolved against the count defined so far.
 void check_index(const LineReader& reader, std::string_view word, std::size_t defined, const char* kind) {
     long long index = 0;
-    if (!parse_integer(word, index)) reader.fail("malformed " + std::string(kind) + " index " + quoted(word));
+    if (!parse_integer(word, index))
+        reader.fail("malformed " + std::string(kind) + " index " + quote_for_message(word));
     const long long resolved = index < 0 ? static_cast<long long>(defined) + index : index - 1;
     if (index == 0 || resolved < 0 || resolved >= static_cast<long long>(defined)) {
         reader.fail(std::string(kind) + " index " + std::to_string(index) + " is out of range (" +
@@ -75,11 +71,36 @@ void check_index(const LineReader& reader, std::string_view word, std::size_t de
 }
 
 struct ObjCounts {
-    std::size_t v = 0, vt = 0, vn = 0;
+    std::size_t v = 0, vt = 0, vn = 0, corners = 0;
 };
 
-void check_face(const LineReader& reader, const std::vector<std::string_view>& words, const ObjCounts& counts) {
-    if (words.size() < 4) reader.fail("a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
+// Counts one more of `kind` and refuses the line that goes beyond `limit`, before tinyobjloader allocates.
+void count_one(const LineReader& reader, std::size_t& count, std::size_t limit, const char* kind,
+               std::size_t added = 1) {
+    count += added;
+    if (count > limit) {
+        reader.fail("more than " + std::to_string(limit) + " " + kind + "; the limit for one scene file");
+    }
+}
+
+void add_libraries(const LineReader& reader, const std::vector<std::string_view>& words, ObjFacts& facts) {
+    if (words.size() < 2) reader.fail("'mtllib' needs a file name");
+    for (std::size_t i = 1; i < words.size(); ++i) {
+        const std::string name(words[i]);
+        bool seen = false;
+        for (const ObjLibrary& lib : facts.libraries) seen |= lib.name == name;
+        if (seen) continue;
+        if (facts.libraries.size() == kMaxMaterialLibraries) {
+            reader.fail("more than " + std::to_string(kMaxMaterialLibraries) + " material libraries");
+        }
+        facts.libraries.push_back({name, reader.number()});
+    }
+}
+
+void check_face(const LineReader& reader, const std::vector<std::string_view>& words,
+                const ObjCounts& counts) {
+    if (words.size() < 4)
+        reader.fail("a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
     if (words.size() - 1 > kMaxFaceCorners) {
         reader.fail("a face with " + std::to_string(words.size() - 1) + " corners; the limit is " +
                     std::to_string(kMaxFaceCorners));
@@ -94,14 +115,15 @@ void check_face(const LineReader& reader, const std::vector<std::string_view>& w
         if (!vt.empty()) check_index(reader, vt, counts.vt, "texture coordinate");
         if (s2 == std::string_view::npos) continue;
         const std::string_view vn = corner.substr(s2 + 1);
-        if (vn.find('/') != std::string_view::npos) reader.fail("malformed face corner " + quoted(corner));
+        if (vn.find('/') != std::string_view::npos)
+            reader.fail("malformed face corner " + quote_for_message(corner));
         if (!vn.empty()) check_index(reader, vn, counts.vn, "normal");
     }
 }
 
 }  // namespace
 
-ObjFacts check_obj_text(std::string_view text, const std::string& path) {
+ObjFacts check_obj_text(std::string_view text, const std::string& path, const SceneFileLimits& limits) {
     ObjFacts facts;
     ObjCounts counts;
     LineReader reader(text, path);
@@ -112,19 +134,19 @@ ObjFacts check_obj_text(std::string_view text, const std::string& path) {
         const std::string_view key = words[0];
         if (key == "v") {
             check_numbers(reader, words, 3, 7, true);
-            ++counts.v;
+            count_one(reader, counts.v, limits.vertices, "vertices");
         } else if (key == "vt") {
             check_numbers(reader, words, 1, 3, false);
-            ++counts.vt;
+            count_one(reader, counts.vt, limits.vertices, "texture coordinates");
         } else if (key == "vn") {
             check_numbers(reader, words, 3, 3, false);
-            ++counts.vn;
+            count_one(reader, counts.vn, limits.vertices, "normals");
         } else if (key == "f") {
             check_face(reader, words, counts);
-            ++facts.face_count;
+            count_one(reader, facts.face_count, limits.faces, "faces");
+            count_one(reader, counts.corners, limits.face_corners, "face corners", words.size() - 1);
         } else if (key == "mtllib") {
-            if (words.size() < 2) reader.fail("'mtllib' needs a file name");
-            for (std::size_t i = 1; i < words.size(); ++i) facts.libraries.push_back({std::string(words[i]), reader.number()});
+            add_libraries(reader, words, facts);
         } else if (key == "usemtl") {
             if (words.size() < 2) reader.fail("'usemtl' needs a material name");
         }
@@ -152,10 +174,11 @@ std::map<std::string, std::size_t> check_mtl_text(std::string_view text, const s
             for (std::size_t i = 1; i < 4; ++i) {
                 const double value = number_at(reader, words[i]);
                 if (key == "Kd" && !(value >= 0.0 && value < 1.0)) {
-                    reader.fail("reflectance (Kd) " + quoted(words[i]) + " must lie in [0, 1)");
+                    reader.fail("reflectance (Kd) " + quote_for_message(words[i]) + " must lie in [0, 1)");
                 }
                 if (key == "Ke" && !(std::isfinite(value) && value >= 0.0)) {
-                    reader.fail("emission (Ke) " + quoted(words[i]) + " must be finite and not negative");
+                    reader.fail("emission (Ke) " + quote_for_message(words[i]) +
+                                " must be finite and not negative");
                 }
             }
         }

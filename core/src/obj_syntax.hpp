@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "scene_limits.hpp"
+
 namespace rad {
 
 // tinyobjloader reads a malformed number as 0 and an out-of-range index as a warning, without a line
@@ -22,11 +24,7 @@ struct ObjFacts {
     std::size_t face_count = 0;
 };
 
-// Most corners a face may have; larger polygons are almost certainly damage, and triangulating them costs
-// time quadratic in their size.
-constexpr std::size_t kMaxFaceCorners = 4096;
-
-ObjFacts check_obj_text(std::string_view text, const std::string& path);
+ObjFacts check_obj_text(std::string_view text, const std::string& path, const SceneFileLimits& limits = {});
 
 // Material name -> line of its `newmtl`. Checks Kd (three numbers in [0, 1)) and Ke (three numbers >= 0).
 std::map<std::string, std::size_t> check_mtl_text(std::string_view text, const std::string& path);

@@ -7,8 +7,8 @@
 #include <cstring>
 #include <vector>
 
-#include "obj_syntax.hpp"  // kMaxFaceCorners
 #include "rad/error.hpp"
+#include "scene_limits.hpp"
 #include "text_file.hpp"
 
 namespace rad {
@@ -57,19 +57,22 @@ bool is_float_type(const std::string& type) {
 double min_element_bytes(const Element& e, Format format) {
     if (format == Format::ascii) return 2.0 * static_cast<double>(e.properties.size());  // "0 " per value
     double bytes = 0.0;
-    for (const Property& p : e.properties) bytes += static_cast<double>(type_size(p.count_type.empty() ? p.type : p.count_type));
+    for (const Property& p : e.properties)
+        bytes += static_cast<double>(type_size(p.count_type.empty() ? p.type : p.count_type));
     return bytes;
 }
 
 Format parse_format(const std::string& path, std::size_t line, const std::vector<std::string_view>& words) {
-    if (words.size() < 2) fail_at(path, line, "'format' needs ascii, binary_little_endian or binary_big_endian");
+    if (words.size() < 2)
+        fail_at(path, line, "'format' needs ascii, binary_little_endian or binary_big_endian");
     if (words[1] == "ascii") return Format::ascii;
     if (words[1] == "binary_little_endian") return Format::binary_little_endian;
     if (words[1] == "binary_big_endian") return Format::binary_big_endian;
     fail_at(path, line, "unknown PLY format '" + std::string(words[1]) + "'");
 }
 
-Property parse_property(const std::string& path, std::size_t line, const std::vector<std::string_view>& words) {
+Property parse_property(const std::string& path, std::size_t line,
+                        const std::vector<std::string_view>& words) {
     Property p;
     if (words.size() == 3 && type_size(std::string(words[1])) > 0) {
         p.type = words[1];
@@ -86,8 +89,20 @@ Property parse_property(const std::string& path, std::size_t line, const std::ve
     fail_at(path, line, "malformed property declaration");
 }
 
+// OpenMesh reads faces against the vertices read before them, and one list of each.
+void check_new_element(const std::string& path, std::size_t line, const Header& header,
+                       std::string_view name) {
+    bool has_vertex = false;
+    for (const Element& e : header.elements) {
+        if (e.name == name) fail_at(path, line, "a second '" + std::string(name) + "' element");
+        has_vertex |= e.name == "vertex";
+    }
+    if (name == "face" && !has_vertex) fail_at(path, line, "'face' element before the 'vertex' element");
+}
+
 Header parse_header(const std::string& path, const std::string& bytes) {
-    if (bytes.compare(0, 3, "ply") != 0) throw InputError(path + ": not a PLY file (it does not start with 'ply')");
+    if (bytes.compare(0, 3, "ply") != 0)
+        throw InputError(path + ": not a PLY file (it does not start with 'ply')");
     Header header;
     std::size_t pos = 0;
     std::size_t line = 0;
@@ -106,6 +121,7 @@ Header parse_header(const std::string& path, const std::string& bytes) {
             if (words.size() != 3 || !parse_integer(words[2], count) || count < 0) {
                 fail_at(path, line, "malformed element declaration");
             }
+            check_new_element(path, line, header, words[1]);
             header.elements.push_back({std::string(words[1]), static_cast<std::uint64_t>(count), {}});
         } else if (words[0] == "property") {
             if (header.elements.empty()) fail_at(path, line, "'property' before any 'element'");
@@ -120,9 +136,22 @@ Header parse_header(const std::string& path, const std::string& bytes) {
     return header;
 }
 
-void check_counts(const std::string& path, const Header& header, std::size_t body_bytes) {
+void check_limit(const std::string& path, const Element& e, std::size_t limit, const char* kind) {
+    if (e.count > limit) {
+        throw InputError(path + ": header declares " + std::to_string(e.count) + " " + kind +
+                         "; the limit for one "
+                         "scene file is " +
+                         std::to_string(limit));
+    }
+}
+
+void check_counts(const std::string& path, const Header& header, std::size_t body_bytes,
+                  const SceneFileLimits& limits) {
     for (const Element& e : header.elements) {
-        if (static_cast<double>(e.count) * min_element_bytes(e, header.format) > static_cast<double>(body_bytes)) {
+        if (e.name == "vertex") check_limit(path, e, limits.vertices, "vertices");
+        if (e.name == "face") check_limit(path, e, limits.faces, "faces");
+        if (static_cast<double>(e.count) * min_element_bytes(e, header.format) >
+            static_cast<double>(body_bytes)) {
             throw InputError(path + ": header declares " + std::to_string(e.count) + " '" + e.name +
                              "' elements, more than the file's " + std::to_string(body_bytes) +
                              " bytes of data can hold");
@@ -133,20 +162,27 @@ void check_counts(const std::string& path, const Header& header, std::size_t bod
 // What the checks need to know about a value as they walk the elements.
 struct Checks {
     std::uint64_t vertex_count = 0;
+    std::size_t face_corners = 0;  // so far
+    std::size_t max_face_corners = 0;
 };
 
 bool is_coordinate(const Element& e, const Property& p) {
     return e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z");
 }
 bool is_face_index_list(const Element& e, const Property& p) {
-    return e.name == "face" && !p.count_type.empty() && (p.name == "vertex_indices" || p.name == "vertex_index");
+    return e.name == "face" && !p.count_type.empty() &&
+           (p.name == "vertex_indices" || p.name == "vertex_index");
 }
 
 // Reads values from the body: whitespace-separated words (ASCII) or fixed-size binary fields.
 class BodyReader {
-public:
+  public:
     BodyReader(const std::string& path, const std::string& bytes, const Header& header)
-        : path_(path), bytes_(bytes), format_(header.format), pos_(header.body_offset), line_(header.body_line) {}
+        : path_(path),
+          bytes_(bytes),
+          format_(header.format),
+          pos_(header.body_offset),
+          line_(header.body_line) {}
 
     // Starts element `index` of `name`: in ASCII, one element is one line.
     void begin_element(const std::string& name, std::uint64_t index) {
@@ -169,8 +205,9 @@ public:
             if (word_ >= words_.size()) fail("fewer values than the header declares");
             double v = 0.0;
             const std::string_view w = words_[word_++];
-            if (!parse_number(w, v)) fail("malformed number '" + std::string(w.substr(0, 40)) + "'");
-            if (!is_float_type(type) && v != std::floor(v)) fail("'" + std::string(w) + "' is not an integer");
+            if (!parse_number(w, v)) fail(bad_number_message(w));
+            if (!is_float_type(type) && v != std::floor(v))
+                fail("'" + std::string(w) + "' is not an integer");
             return v;
         }
         return binary_value(type);
@@ -183,10 +220,11 @@ public:
 
     void expect_end() {
         if (format_ == Format::ascii) skip_blank_lines();
-        if (pos_ < bytes_.size() && format_ == Format::ascii) fail_at(path_, line_, "data after the last element");
+        if (pos_ < bytes_.size() && format_ == Format::ascii)
+            fail_at(path_, line_, "data after the last element");
     }
 
-private:
+  private:
     void skip_blank_lines() {
         while (pos_ < bytes_.size()) {
             const std::size_t end = std::min(bytes_.find('\n', pos_), bytes_.size());
@@ -233,7 +271,7 @@ private:
     std::size_t word_ = 0;
 };
 
-void check_property(BodyReader& body, const Element& e, const Property& p, const Checks& checks) {
+void check_property(BodyReader& body, const Element& e, const Property& p, Checks& checks) {
     if (p.count_type.empty()) {
         const double v = body.value(p.type);
         if (is_coordinate(e, p) && !std::isfinite(v)) body.fail("coordinate " + p.name + " is not finite");
@@ -243,6 +281,13 @@ void check_property(BodyReader& body, const Element& e, const Property& p, const
     if (count < 0 || count > static_cast<double>(kMaxFaceCorners)) {
         body.fail("list '" + p.name + "' of " + std::to_string(static_cast<long long>(count)) +
                   " items; the limit is " + std::to_string(kMaxFaceCorners));
+    }
+    if (is_face_index_list(e, p)) {
+        checks.face_corners += static_cast<std::size_t>(count);
+        if (checks.face_corners > checks.max_face_corners) {
+            body.fail("more than " + std::to_string(checks.max_face_corners) +
+                      " face corners; the limit for one scene file");
+        }
     }
     for (int i = 0; i < static_cast<int>(count); ++i) {
         const double v = body.value(p.type);
@@ -255,10 +300,11 @@ void check_property(BodyReader& body, const Element& e, const Property& p, const
 
 }  // namespace
 
-void check_ply(const std::string& path, const std::string& bytes) {
+void check_ply(const std::string& path, const std::string& bytes, const SceneFileLimits& limits) {
     const Header header = parse_header(path, bytes);
-    check_counts(path, header, bytes.size() - header.body_offset);
+    check_counts(path, header, bytes.size() - header.body_offset, limits);
     Checks checks;
+    checks.max_face_corners = limits.face_corners;
     for (const Element& e : header.elements) {
         if (e.name == "vertex") checks.vertex_count = e.count;
     }
