@@ -4,7 +4,6 @@
 #include <stb_image_write.h>
 #include <tinyexr.h>
 
-#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +11,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "rad/atomic_file.hpp"
 #include "rad/error.hpp"
 #include "rad/file_names.hpp"
 
@@ -24,8 +24,7 @@ void write_png(const std::string& path, const RadianceImage& image, double expos
     std::vector<unsigned char> bytes(image.pixels.size() * 3);
     for (std::size_t i = 0; i < image.pixels.size(); ++i) {
         for (int c = 0; c < 3; ++c) {
-            bytes[3 * i + c] =
-                static_cast<unsigned char>(std::lround(255.0f * srgb_encode(image.pixels[i][c] * scale)));
+            bytes[3 * i + c] = srgb_byte(image.pixels[i][c] * scale);
         }
     }
     if (!stbi_write_png(path.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3)) {
@@ -94,11 +93,6 @@ RadianceImage read_png(const std::string& path) {
 
 }  // namespace
 
-float srgb_encode(float linear) {
-    const float x = std::clamp(linear, 0.0f, 1.0f);
-    return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
-}
-
 void check_image_path(const std::string& path) {
     const std::string ext = lowercase_extension(path);
     if (ext != ".png" && ext != ".exr" && ext != ".pfm") {
@@ -113,22 +107,12 @@ void check_image_path(const std::string& path) {
 void write_image(const std::string& path, const RadianceImage& image, double exposure) {
     check_image_path(path);
     const std::string ext = lowercase_extension(path);
-    const std::filesystem::path target(path);
-    const std::filesystem::path folder = target.parent_path().empty() ? "." : target.parent_path();
-    // The temporary keeps the extension: the writers do not care, but a person looking at the folder does.
-    const std::string temporary =
-        (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".tmp" + ext))
-            .string();
-    try {
+    replace_file_atomically(path, [&](const std::filesystem::path& temporary_path) {
+        const std::string temporary = temporary_path.string();
         if (ext == ".png") write_png(temporary, image, exposure);
         if (ext == ".exr") write_exr(temporary, image);
         if (ext == ".pfm") write_pfm(temporary, image);
-        std::filesystem::rename(temporary, target);
-    } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw;
-    }
+    });
 }
 
 RadianceImage read_image(const std::string& path) {

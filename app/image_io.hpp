@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "rad/srgb.hpp"  // srgb_encode, which PNG applies
+
 namespace rad {
 
 // An image of linear radiance L (scene units), width × height, top row first.
@@ -23,8 +25,5 @@ void check_image_path(const std::string& path);
 
 // Reads .pfm or .png back (PNG as its 8-bit sRGB values / 255, not linearized) for tests and tools.
 RadianceImage read_image(const std::string& path);
-
-// The sRGB transfer curve of a linear value, clamped to [0, 1].
-float srgb_encode(float linear);
 
 }  // namespace rad

@@ -1,6 +1,6 @@
 // `radiosity render [SCENE] --out FILE`: solves the scene once and writes the image a camera sees, with no
 // window (EGL, or OSMesa). .png gets exposure and the sRGB curve; .exr and .pfm hold linear radiance L = B /
-// π.
+// π. --export writes the mesh drawn (smooth or --flat) with its colours.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "export_option.hpp"
 #include "gl/headless_context.hpp"
 #include "gl_platform_option.hpp"
 #include "image_io.hpp"
@@ -31,6 +32,7 @@ struct RenderOptions {
     std::string camera;  // "ex,ey,ez,tx,ty,tz[,ux,uy,uz]"; empty: the scene's camera
     double fov = 0.0;    // 0: the camera's own
     double exposure = 0.0;
+    std::vector<std::string> exports;
     bool flat = false;
     bool outline = false;
     HeadlessPlatform gl_platform = HeadlessPlatform::automatic;
@@ -77,6 +79,7 @@ Camera parse_camera(const std::string& text, const Camera& fallback) {
 
 int run_render(RenderOptions options) {
     check_image_path(options.out);
+    check_export_paths(options.exports);
     options.pipeline.display.mode = options.flat ? ColourMode::flat : ColourMode::smooth;
     RadiosityPipeline pipeline(options.pipeline);
     Camera camera = scene_camera(pipeline.loaded().scene);
@@ -104,6 +107,7 @@ int run_render(RenderOptions options) {
         pipeline.patches().size(), std::string(solver_method_name(pipeline.method())).c_str(), report.step,
         report.residual, s.mesh, s.form_factors, s.solve, render_seconds, context.description().c_str());
     std::printf("wrote %s (%dx%d)\n", options.out.c_str(), options.width, options.height);
+    write_exports(options.exports, pipeline, options.exposure, std::cout);
     return 0;
 }
 
@@ -130,10 +134,9 @@ CommandRunner add_render_command(CLI::App& app) {
         "that frames the scene)");
     render->add_option("--fov", options->fov, "Vertical field of view in degrees (default: the camera's own)")
         ->check(finite_range(1.0, 179.0));
-    render
-        ->add_option("--exposure", options->exposure, "PNG only: multiply radiance by 2^EXPOSURE before sRGB")
-        ->check(finite_range(-64.0, 64.0))
-        ->capture_default_str();
+    add_exposure_option(*render, options->exposure,
+                        "PNG and --export colours: multiply radiance by 2^EXPOSURE (before sRGB)");
+    add_export_option(*render, options->exports);
     render->add_flag("--flat", options->flat, "Show each patch's own radiosity instead of interpolating");
     render->add_flag("--outline", options->outline, "Draw the patches' edges");
     add_gl_platform_option(*render, options->gl_platform);

@@ -1,6 +1,7 @@
 // `radiosity solve [SCENE] --json FILE`: meshes the scene, computes the form factors, runs the chosen solver
 // to convergence (or its step limit), writes the per-patch results and statistics as JSON and prints a short
-// summary. Exit status 1 (after writing the file) when the system cannot converge.
+// summary, and with --export the display mesh with its colours. Exit status 1 (after writing the JSON, and
+// exporting nothing) when the system cannot converge.
 #include <sys/resource.h>
 
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "export_option.hpp"
 #include "progress_bar.hpp"
 #include "rad/error.hpp"
 #include "rad/solution_json.hpp"
@@ -21,6 +23,8 @@ namespace {
 struct SolveCommandOptions {
     PipelineOptions pipeline;
     std::string json_path;
+    std::vector<std::string> exports;
+    double exposure = 0.0;
 };
 
 std::size_t peak_memory_bytes() {
@@ -109,6 +113,7 @@ SolveStatistics statistics(const RadiosityPipeline& pipeline) {
 
 int run_solve(const SolveCommandOptions& options) {
     check_output_folder(options.json_path);
+    check_export_paths(options.exports);
     RadiosityPipeline pipeline(options.pipeline);
     {
         Progress progress;
@@ -128,8 +133,9 @@ int run_solve(const SolveCommandOptions& options) {
     }
     if (status == SolverStatus::diverged || status == SolverStatus::not_converging) {
         std::cerr << "radiosity: failed: the solver " << stats.status << ": " << stats.status_message << '\n';
-        return 1;
+        return 1;  // a failed solution is recorded in the JSON but not exported as colours
     }
+    write_exports(options.exports, pipeline, options.exposure, std::cout);
     return 0;
 }
 
@@ -142,6 +148,9 @@ CommandRunner add_solve_command(CLI::App& app) {
     add_pipeline_options(*solve, options->pipeline);
     solve->add_option("--json", options->json_path, "Where to write the per-patch results and statistics")
         ->required();
+    add_export_option(*solve, options->exports);
+    add_exposure_option(*solve, options->exposure,
+                        "--export only: the colours show radiance x 2^EXPOSURE (as render does)");
     return [solve, options]() -> int {
         if (!*solve) return -1;
         return run_solve(*options);

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "export_option.hpp"
 #include "number_checks.hpp"
 #include "viewer/viewer.hpp"
 #include "viewer/viewer_options.hpp"
@@ -23,7 +24,7 @@ void add_viewer_options(CLI::App& command, ViewerOptions& options) {
         ->check(CLI::Range(1, kMaxWindowSide))
         ->capture_default_str();
     command.add_option("--exposure", options.exposure, "Show radiance × 2^EXPOSURE (as render's PNGs)")
-        ->check(finite_range(-64.0, 64.0))
+        ->check(finite_range(-kLargestExposure, kLargestExposure))
         ->capture_default_str();
     command.add_option("--steps", options.steps, "Script: take N solver steps after the form factors")
         ->check(CLI::Range(0, 1000000));

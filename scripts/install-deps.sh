@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config
   libopenmesh-dev libembree-dev libtbb-dev libglm-dev
-  libtinyobjloader-dev libcli11-dev libeigen3-dev nlohmann-json3-dev
+  libtinyobjloader-dev libcli11-dev libeigen3-dev nlohmann-json3-dev libtinygltf-dev
   libgtest-dev libbenchmark-dev
   python3-glad libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri libstb-dev libtinyexr-dev
   libglfw3-dev libimgui-dev xvfb xauth

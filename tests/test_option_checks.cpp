@@ -43,7 +43,7 @@ TEST(OptionChecks, ValuesAtTheEdgesOfTheRangesAreAccepted) {
     const std::string out = (dir.path() / "x.png").string();
     const auto result =
         test::run_radiosity({"render", "builtin:cube", "--out", out, "--width", "8", "--height", "8", "--fov",
-                             "179", "--exposure", "-64", "--threads", "1"});
+                             "179", "--exposure", "-100", "--threads", "1"});
     EXPECT_EQ(result.status, 0) << result.err;
     EXPECT_TRUE(std::filesystem::exists(out));
 }

@@ -1,12 +1,14 @@
 // `radiosity render`: the images it writes show what the solution says, where it should be, and match the
-// reviewed golden image.
+// reviewed golden image; --export writes the mesh it draws.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <glm/common.hpp>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "export_readers.hpp"
 #include "golden_image.hpp"
 #include "image_io.hpp"
 #include "test_support.hpp"
@@ -41,7 +43,7 @@ TEST(RenderCommand, CornellBoxHasRedLeftGreenRightLightOnTop) {
     ASSERT_EQ(image.width, 128);
     const glm::vec3 left = mean_over(image, 8, 48, 20, 80);
     const glm::vec3 right = mean_over(image, 108, 48, 120, 80);
-    EXPECT_GT(left.r, 3 * left.g);  // the red wall
+    EXPECT_GT(left.r, 3 * left.g);    // the red wall
     EXPECT_GT(right.g, 2 * right.r);  // the green wall
     // The brightest pixel is the light: in the top fifth of the image, in its middle fifth across, and at
     // least as bright as the light's own radiance (Le = 17 12 4) in linear units.
@@ -67,8 +69,9 @@ TEST(RenderCommand, CornellBoxMatchesTheGoldenImage) {
 // A closed cube, every face emitting E = 1 with reflectance 0.5: B = E / (1 - ρ) = 2 on every patch, so every
 // pixel seen from inside shows L = 2 / π.
 std::string write_furnace(const test::TempDir& dir) {
-    dir.write("furnace.mtl", "newmtl glow\nKd 0.5 0.5 0.5\nKe 0.3183098861837907 0.3183098861837907 "
-                             "0.3183098861837907\n");
+    dir.write("furnace.mtl",
+              "newmtl glow\nKd 0.5 0.5 0.5\nKe 0.3183098861837907 0.3183098861837907 "
+              "0.3183098861837907\n");
     return dir.write("furnace.obj",
                      "mtllib furnace.mtl\nusemtl glow\n"
                      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
@@ -78,9 +81,10 @@ std::string write_furnace(const test::TempDir& dir) {
 
 TEST(RenderCommand, FurnaceShowsEOverOneMinusRhoOverPiEverywhere) {
     test::TempDir dir;
-    const RadianceImage image = render({write_furnace(dir), "--patch-size", "0.25", "--width", "96", "--height",
-                                        "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
-                                       (dir.path() / "furnace.pfm").string());
+    const RadianceImage image =
+        render({write_furnace(dir), "--patch-size", "0.25", "--width", "96", "--height", "96", "--camera",
+                "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
+               (dir.path() / "furnace.pfm").string());
     const float expected = static_cast<float>(2.0 / std::numbers::pi);
     float worst = 0.0f;
     for (const glm::vec3& p : image.pixels) {
@@ -93,7 +97,8 @@ TEST(RenderCommand, FlatModeShowsThePatchsOwnRadiosityAtItsCentre) {
     test::TempDir dir;
     // builtin:parallel at one patch per square: look up at the upper square's front (it faces down).
     const std::string json_path = (dir.path() / "solution.json").string();
-    ASSERT_EQ(run_radiosity({"solve", "builtin:parallel", "--patch-size", "1", "--json", json_path}).status, 0);
+    ASSERT_EQ(run_radiosity({"solve", "builtin:parallel", "--patch-size", "1", "--json", json_path}).status,
+              0);
     std::ifstream in(json_path);
     const nlohmann::json doc = nlohmann::json::parse(in);
     double upper_b = -1.0;
@@ -101,12 +106,34 @@ TEST(RenderCommand, FlatModeShowsThePatchsOwnRadiosityAtItsCentre) {
         if (patch.at("surface") == "upper") upper_b = patch.at("radiosity").at(0).get<double>();
     }
     ASSERT_GT(upper_b, 0.0);
-    const RadianceImage image = render({"builtin:parallel", "--patch-size", "1", "--flat", "--width", "33",
-                                        "--height", "33", "--camera", "0.5,0.2,0.5,0.5,1,0.5,0,0,1", "--fov", "60"},
-                                       (dir.path() / "flat.pfm").string());
+    const RadianceImage image =
+        render({"builtin:parallel", "--patch-size", "1", "--flat", "--width", "33", "--height", "33",
+                "--camera", "0.5,0.2,0.5,0.5,1,0.5,0,0,1", "--fov", "60"},
+               (dir.path() / "flat.pfm").string());
     const glm::vec3 centre = image.pixels[16 * 33 + 16];
     EXPECT_NEAR(centre.r, upper_b / std::numbers::pi, 1e-6 * upper_b);
     EXPECT_EQ(centre.r, centre.g);
+}
+
+// --export writes the mesh render draws: with --flat every patch has corners of its own showing its own
+// radiance, so each triangle's three corners agree; the colours take render's --exposure.
+TEST(RenderCommand, ExportsTheMeshItDraws) {
+    test::TempDir dir;
+    const std::string gltf = (dir.path() / "flat.gltf").string();
+    const auto result = run_radiosity({"render", "builtin:cornell", "--patch-size", "100", "--flat",
+                                       "--width", "16", "--height", "16", "--exposure", "-1", "--out",
+                                       (dir.path() / "flat.png").string(), "--export", gltf});
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.out.find("wrote " + gltf), std::string::npos) << result.out;
+    const test::ExportedMesh mesh = test::read_gltf_export(gltf);
+    ASSERT_GT(mesh.triangles.size(), 0u);
+    for (const glm::uvec3& t : mesh.triangles) {
+        ASSERT_EQ(mesh.radiance[t[0]], mesh.radiance[t[1]]);
+        ASSERT_EQ(mesh.radiance[t[0]], mesh.radiance[t[2]]);
+    }
+    for (std::size_t v = 0; v < mesh.colours.size(); ++v) {
+        ASSERT_EQ(mesh.colours[v], glm::clamp(mesh.radiance[v] * 0.5f, 0.0f, 1.0f)) << "vertex " << v;
+    }
 }
 
 TEST(RenderCommand, BadOptionsExitWith2AndWriteNothing) {
@@ -120,6 +147,9 @@ TEST(RenderCommand, BadOptionsExitWith2AndWriteNothing) {
         {{"render", "--out", out, "--camera", "0,0,0,0,0,0"}, "--camera"},
         {{"render", "--out", out, "--width", "0"}, "--width"},
         {{"render", "--out", out, "--fov", "200"}, "--fov"},
+        {{"render", "--out", out, "--export", (dir.path() / "x.obj").string()}, "--export"},
+        {{"render", "--out", out, "--export", (dir.path() / "no" / "x.ply").string()}, "--export"},
+        {{"render", "--out", out, "--exposure", "nan"}, "--exposure"},
         {{"render"}, "--out"},
     };
     for (const auto& [args, option] : cases) {

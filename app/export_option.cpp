@@ -1,0 +1,53 @@
+#include "export_option.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "number_checks.hpp"
+#include "rad/error.hpp"
+#include "rad/file_names.hpp"
+#include "rad/scene_export.hpp"
+#include "radiosity_pipeline.hpp"
+
+namespace rad {
+
+void add_exposure_option(CLI::App& command, double& exposure, const std::string& help) {
+    command.add_option("--exposure", exposure, help)
+        ->check(finite_range(-kLargestExposure, kLargestExposure))
+        ->capture_default_str();
+}
+
+void add_export_option(CLI::App& command, std::vector<std::string>& paths) {
+    command
+        .add_option("--export", paths,
+                    "Also write the solved scene's mesh with its colours: .ply (sRGB vertex colours and "
+                    "linear radiance), .gltf or .glb (COLOR_0 and linear _RADIANCE); repeatable")
+        ->type_name("FILE");
+}
+
+void check_export_paths(const std::vector<std::string>& paths) {
+    for (const std::string& path : paths) {
+        if (!export_format(path)) {
+            const std::string ext = lowercase_extension(path);
+            throw InputError("--export " + path + ": " +
+                             (ext.empty() ? "no extension" : "unknown export format '" + ext + "'") +
+                             " (use .ply, .gltf or .glb)");
+        }
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+            throw InputError("--export " + path + ": the folder " + folder.string() + " does not exist");
+        }
+    }
+}
+
+void write_exports(const std::vector<std::string>& paths, const RadiosityPipeline& pipeline, double exposure,
+                   std::ostream& out) {
+    if (paths.empty()) return;
+    const std::vector<glm::vec3> radiance = pipeline.vertex_radiance();
+    for (const std::string& path : paths) {
+        export_scene(path, pipeline.display(), radiance, ExportOptions{.exposure = exposure});
+        out << "wrote " << path << '\n';
+    }
+}
+
+}  // namespace rad
