@@ -1,7 +1,8 @@
 // Numeric options are checked when the command line is read: CLI11's Range lets NaN through, so every
 // floating-point option also refuses NaN and infinity, and counts that would make the program try the
 // impossible (a million threads) are refused. Each gives exit status 2, one line naming the option, and
-// writes nothing.
+// writes nothing. (Named test_render_* so that under the sanitizers it runs without leak checks, as every
+// program that opens an OpenGL context does: see tests/CMakeLists.txt.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +15,7 @@
 namespace rad {
 namespace {
 
-TEST(OptionChecks, NonFiniteAndAbsurdValuesExitTwoNamingTheOption) {
+TEST(RenderOptionChecks, NonFiniteAndAbsurdValuesExitTwoNamingTheOption) {
     test::TempDir dir;
     const std::string out = (dir.path() / "x.png").string();
     const std::vector<std::vector<std::string>> cases = {
@@ -38,7 +39,7 @@ TEST(OptionChecks, NonFiniteAndAbsurdValuesExitTwoNamingTheOption) {
     }
 }
 
-TEST(OptionChecks, ValuesAtTheEdgesOfTheRangesAreAccepted) {
+TEST(RenderOptionChecks, ValuesAtTheEdgesOfTheRangesAreAccepted) {
     test::TempDir dir;
     const std::string out = (dir.path() / "x.png").string();
     const auto result =
