@@ -26,7 +26,8 @@ MaterialLibraries read_material_libraries(const std::string& obj_path, const Obj
     const std::filesystem::path folder = std::filesystem::path(obj_path).parent_path();
     for (const ObjLibrary& lib : facts.libraries) {
         const std::string mtl_path = (folder / lib.name).string();
-        if (!std::filesystem::is_regular_file(mtl_path)) {
+        std::error_code unreadable;  // e.g. a name too long for the file system: not found, not a failure
+        if (!std::filesystem::is_regular_file(mtl_path, unreadable)) {
             warnings.push_back(obj_path + ":" + std::to_string(lib.line) + ": material library '" + lib.name +
                                "' not found; its materials fall back to the default (reflectance 0.5, no emission)");
             continue;

@@ -16,9 +16,10 @@ public:
 
     bool next(std::string_view& line) {
         if (pos_ >= text_.size()) return false;
-        const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+        // A line ends at "\n", "\r\n" or a lone "\r", as tinyobjloader reads it.
+        const std::size_t end = std::min(text_.find_first_of("\r\n", pos_), text_.size());
         line = text_.substr(pos_, end - pos_);
-        pos_ = end + 1;
+        pos_ = end + (text_.substr(end, 2) == "\r\n" ? 2 : 1);
         ++number_;
         if (line.find('\0') != std::string_view::npos) fail("binary data; this is not a text file");
         return true;
@@ -59,6 +60,9 @@ void check_numbers(const LineReader& reader, const std::vector<std::string_view>
         const double value = number_at(reader, words[i]);
         if (must_be_finite && !std::isfinite(value)) {
             reader.fail("coordinate " + quoted(words[i]) + " is not a finite number");
+        }
+        if (must_be_finite && std::abs(value) > kMaxCoordinate) {
+            reader.fail("coordinate " + quoted(words[i]) + " is beyond ±1e30");
         }
     }
 }
@@ -120,7 +124,7 @@ ObjFacts check_obj_text(std::string_view text, const std::string& path) {
             check_numbers(reader, words, 3, 3, false);
             ++counts.vn;
         } else if (key == "f") {
-            check_face(reader, words, counts);
+            check_face(reader, split_whitespace(line), counts);  // tinyobjloader reads corners past a '#'
             ++facts.face_count;
         } else if (key == "mtllib") {
             if (words.size() < 2) reader.fail("'mtllib' needs a file name");

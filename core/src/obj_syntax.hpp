@@ -26,6 +26,10 @@ struct ObjFacts {
 // time quadratic in their size.
 constexpr std::size_t kMaxFaceCorners = 4096;
 
+// Largest coordinate magnitude a scene file may hold: far beyond any real scene, it keeps the squares (areas)
+// and fourth powers (form-factor kernels) of lengths finite.
+constexpr double kMaxCoordinate = 1e30;
+
 ObjFacts check_obj_text(std::string_view text, const std::string& path);
 
 // Material name -> line of its `newmtl`. Checks Kd (three numbers in [0, 1)) and Ke (three numbers >= 0).

@@ -15,6 +15,8 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes = kMax
 
 // The whitespace-separated words of a line, its comment (from '#') removed.
 std::vector<std::string_view> split_words(std::string_view line);
+// The whitespace-separated words of a line, '#' included (PLY has no such comments).
+std::vector<std::string_view> split_whitespace(std::string_view line);
 
 // Parses the whole word as a number; false for anything else ("1.5x", "", "--").
 bool parse_number(std::string_view word, double& value);
