@@ -3,19 +3,14 @@
 #include <exception>
 #include <iostream>
 
-#include "commands.hpp"
+#include "command_line.hpp"
 #include "rad/error.hpp"
 
 namespace {
 
 int run(int argc, char** argv) {
-    CLI::App app{"radiosity: diffuse global illumination by the radiosity method"};
-    app.require_subcommand(0, 1);
-    // Commands in the order they are tried; the view command, the default, runs when none other claims.
-    const std::vector<rad::CommandRunner> commands = {
-        rad::add_info_command(app),  rad::add_solve_command(app), rad::add_render_command(app),
-        rad::add_bench_command(app), rad::add_view_command(app),
-    };
+    rad::CommandLine command_line;
+    CLI::App& app = command_line.app();
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -26,10 +21,7 @@ int run(int argc, char** argv) {
         std::cerr << "radiosity: error: " << e.what() << " (see radiosity --help)\n";
         return 2;
     }
-    for (const auto& command : commands) {
-        if (const int status = command(); status >= 0) return status;
-    }
-    return 1;
+    return command_line.run_chosen_command();
 }
 
 }  // namespace

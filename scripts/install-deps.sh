@@ -9,6 +9,9 @@ packages=(
   libgtest-dev libbenchmark-dev
   python3-glad libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri libstb-dev libtinyexr-dev
   libglfw3-dev libimgui-dev xvfb xauth
+  # scripts/fuzz.sh: clang with its libFuzzer and sanitizer runtimes (libclang-rt-dev), and llvm for
+  # llvm-symbolizer, which turns the sanitizers' stack traces into file:line.
+  clang libclang-rt-dev llvm
 )
 
 missing=()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The second command of the README: installs what is missing, builds, and runs every test.
 # With SANITIZE=1 it builds a Debug build with AddressSanitizer and UndefinedBehaviorSanitizer into
-# build-sanitize and runs the same tests there.
+# build-sanitize and runs the same tests there. The default run then runs the fuzz smoke (scripts/fuzz.sh,
+# about a minute plus its clang build); FUZZ=0 skips it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
@@ -13,3 +14,6 @@ else
   "$root/scripts/build.sh"
 fi
 ctest --test-dir "${BUILD_DIR:-$root/build}" --output-on-failure -j "$(nproc)"
+if [ "${SANITIZE:-0}" != 1 ] && [ "${FUZZ:-1}" != 0 ]; then
+  "$root/scripts/fuzz.sh"
+fi

@@ -103,6 +103,17 @@ TEST(ObjLoader, MissingMtlFallsBackToTheDefaultMaterial) {
     EXPECT_TRUE(warned);
 }
 
+// A name longer than the file system allows made std::filesystem throw (found by fuzz_obj: exit 1, not 2).
+TEST(ObjLoader, MtlNameTooLongForTheFileSystemIsNotFound) {
+    TempDir dir;
+    const std::string name(300, 'm');
+    const Scene scene =
+        load_obj(dir.write("long.obj", "mtllib " + name + ".mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n"));
+    ASSERT_FALSE(scene.warnings.empty());
+    EXPECT_NE(scene.warnings[0].find("long.obj:1: material library '" + name + ".mtl' not found"),
+              std::string::npos);
+}
+
 TEST(ObjLoader, BadInputNamesFileAndLine) {
     TempDir dir;
     expect_obj_error((dir.path() / "absent.obj").string(), {"absent.obj", "no such file"});
@@ -119,6 +130,15 @@ TEST(ObjLoader, BadInputNamesFileAndLine) {
     expect_obj_error(dir.write("i.obj", "# nothing but a comment\n"), {"i.obj", "no faces"});
     expect_obj_error(dir.write("j.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2 3\n"),
                      {"j.obj:4:", "texture coordinate index 1 is out of range"});
+    // tinyobjloader ends a line at a lone '\r' too (found by fuzz_obj: the face was read unchecked).
+    expect_obj_error(dir.write("k.obj", "v 0 0 0\rv 1 0 0\r\nf 1 2 9\r"),
+                     {"k.obj:3:", "vertex index 9 is out of range"});
+    // tinyobjloader reads a face's corners past a '#' (found by fuzz_obj: corner 5 was read unchecked).
+    expect_obj_error(dir.write("l.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3# 5\n"),
+                     {"l.obj:4:", "malformed vertex index '3#'"});
+    // Coordinates whose squared lengths overflow (found by fuzz_obj: an infinite area).
+    expect_obj_error(dir.write("m.obj", "v 0 0 0\nv 2e30 0 0\nv 0 1 0\nf 1 2 3\n"),
+                     {"m.obj:2:", "coordinate '2e30' is beyond ±1e30"});
 }
 
 TEST(ObjLoader, BadMaterialsNameTheMtlLine) {

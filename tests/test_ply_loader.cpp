@@ -4,9 +4,9 @@
 
 #include <cstring>
 
+#include "expect_input_error.hpp"
 #include "rad/error.hpp"
 #include "rad/scene_loader.hpp"
-#include "expect_input_error.hpp"
 #include "test_support.hpp"
 
 namespace rad {
@@ -87,7 +87,8 @@ TEST(PlyLoader, BadInputIsRefusedWithFileAndLine) {
     TempDir dir;
     const std::string good_faces = "3 0 1 2 200 100 50\n3 0 2 3 10 20 30\n";
     expect_ply_error(dir.write("a.ply", "not a ply\n"), {"a.ply", "not a PLY file"});
-    expect_ply_error(dir.write("b.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"), {"b.ply", "end_header"});
+    expect_ply_error(dir.write("b.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"),
+                     {"b.ply", "end_header"});
     // A forged count is refused before anything is allocated for it.
     std::string forged = kFaceColourHeader;
     forged.replace(forged.find("element face 2"), 14, "element face 2000000000");
@@ -101,16 +102,78 @@ TEST(PlyLoader, BadInputIsRefusedWithFileAndLine) {
                      {"e.ply:15:", "malformed number 'x'"});
     expect_ply_error(dir.write("f.ply", kFaceColourHeader + kSquare + "3 0 1 9 1 1 1\n" + good_faces),
                      {"f.ply:17:", "vertex index 9 is out of range"});
-    expect_ply_error(dir.write("g.ply", kFaceColourHeader + kSquare + "3 0 1 2 1 1 1\n"), {"g.ply", "ends before face 1"});
+    expect_ply_error(dir.write("g.ply", kFaceColourHeader + kSquare + "3 0 1 2 1 1 1\n"),
+                     {"g.ply", "ends before face 1"});
     expect_ply_error(dir.write("h.ply", kFaceColourHeader + kSquare + "3 0 1 2 1 1 1 1\n" + good_faces),
                      {"h.ply:17:", "more values"});
     expect_ply_error(dir.write("i.ply", kFaceColourHeader + kSquare + "3 0 1 2 255 0 0\n3 0 2 3 1 1 1\n"),
                      {"i.ply: face 0", "reflectance"});
 }
 
+// OpenMesh skips a face it cannot add but still stores its colour out of bounds (found by fuzz_ply).
+TEST(PlyLoader, FacesOpenMeshCannotAddAreRefused) {
+    TempDir dir;
+    expect_ply_error(dir.write("short.ply", kFaceColourHeader + kSquare + "3 0 1 2 1 1 1\n2 0 1 1 1 1\n"),
+                     {"short.ply:18:", "a face needs at least 3 corners, found 2"});
+    expect_ply_error(dir.write("empty.ply", kFaceColourHeader + kSquare + "0 1 1 1\n3 0 1 2 1 1 1\n"),
+                     {"empty.ply:17:", "found 0"});
+    expect_ply_error(
+        dir.write("repeated.ply", kFaceColourHeader + kSquare + "3 0 1 2 1 1 1\n3 0 2 2 1 1 1\n"),
+        {"repeated.ply:18:", "vertex index 2 appears twice in one face"});
+}
+
+// Headers and values OpenMesh's reader would read otherwise than they are checked (found by fuzz_ply).
+TEST(PlyLoader, WhatOpenMeshWouldMisreadIsRefused) {
+    TempDir dir;
+    const auto with_header = [&](const std::string& name, const std::string& from, const std::string& to) {
+        std::string header = kFaceColourHeader;
+        header.replace(header.find(from), from.size(), to);
+        return dir.write(name, header + kSquare + "3 0 1 2 1 1 1\n3 0 2 3 1 1 1\n");
+    };
+    expect_ply_error(with_header("a.ply", "format ascii 1.0\n", "comment first\nformat ascii 1.0\n"),
+                     {"a.ply:2:", "the line after 'ply' must be 'format"});
+    // OpenMesh loops for ever on a version it cannot read.
+    expect_ply_error(with_header("b.ply", "ascii 1.0", "ascii abc"), {"b.ply:2:", "format"});
+    expect_ply_error(with_header("c.ply", "element face", "# property float w\nelement face"),
+                     {"c.ply:7:", "'property' inside a '#' line"});
+    expect_ply_error(with_header("d.ply", "property uchar red", "property list uchar float texcoord"),
+                     {"d.ply:9:", "the only list read is the face's vertex_indices"});
+    expect_ply_error(with_header("e.ply", "property uchar red", "property uchar float"),
+                     {"e.ply:9:", "type name"});
+    expect_ply_error(with_header("f.ply", "property list uchar int vertex_indices\n", ""),
+                     {"f.ply:7:", "needs one list 'vertex_indices'"});
+    expect_ply_error(with_header("g.ply", "list uchar int", "list short int"),
+                     {"g.ply:8:", "list count type"});
+    expect_ply_error(with_header("h.ply", "property float x", "property int x"), {"h.ply:4:", "want float"});
+    expect_ply_error(with_header("i.ply", "property uchar red", "property double red"),
+                     {"i.ply:9:", "colour"});
+    expect_ply_error(with_header("j.ply", "end_header", "element edge 5\nend_header"),
+                     {"j.ply:12:", "'edge' has no properties"});
+
+    const std::string faces = "3 0 1 2 1 1 1\n3 0 2 3 1 1 1\n";
+    expect_ply_error(dir.write("k.ply", kFaceColourHeader + kSquare + "3 0 1 2 300 1 1\n" + faces),
+                     {"k.ply:17:", "'300' does not fit the type uchar"});
+    expect_ply_error(dir.write("l.ply", kFaceColourHeader + kSquare + "3 0 1 2.0 1 1 1\n" + faces),
+                     {"l.ply:17:", "'2.0' is not an integer"});
+    expect_ply_error(dir.write("m.ply", kFaceColourHeader + "0 0 0\n1 0 0\n1 1e39 0\n0 1 0\n" + faces),
+                     {"m.ply:15:", "y is beyond the range of float"});
+    expect_ply_error(dir.write("q.ply", kFaceColourHeader + "0 0 0\n1 0 0\n1 1 -2e30\n0 1 0\n" + faces),
+                     {"q.ply:15:", "coordinate z is beyond ±1e30"});
+    expect_ply_error(dir.write("n.ply", kFaceColourHeader + "0 0 #0\n1 0 0\n1 1 0\n0 1 0\n" + faces),
+                     {"n.ply:13:", "malformed number '#0'"});
+    expect_ply_error(dir.write("o.ply", kFaceColourHeader + "0 0 +-1\n1 0 0\n1 1 0\n0 1 0\n" + faces),
+                     {"o.ply:13:", "malformed number '+-1'"});
+
+    std::string binary = kFaceColourHeader;
+    binary.replace(binary.find("ascii"), 5, "binary_little_endian");
+    expect_ply_error(dir.write("p.ply", binary.substr(0, binary.size() - 1) + " \n" + std::string(72, '\0')),
+                     {"p.ply:12:", "'end_header' must follow the last declaration"});
+}
+
 TEST(PlyLoader, CommandLineExitsWithStatus2) {
     TempDir dir;
-    const auto result = test::run_radiosity({"info", dir.write("x.ply", "ply\nformat ascii 1.0\nelement vertex -4\n")});
+    const auto result =
+        test::run_radiosity({"info", dir.write("x.ply", "ply\nformat ascii 1.0\nelement vertex -4\n")});
     EXPECT_EQ(result.status, 2);
     EXPECT_NE(result.err.find("x.ply:3: malformed element declaration"), std::string::npos) << result.err;
 }

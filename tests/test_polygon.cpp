@@ -1,6 +1,9 @@
 // Polygon helpers: area, the planar-convex test, and triangulation of what is not planar and convex.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include <glm/geometric.hpp>
 
 #include "rad/polygon.hpp"
@@ -27,6 +30,26 @@ TEST(Polygon, PlanarConvexTest) {
     EXPECT_FALSE(is_planar_convex(std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0.1}, {0, 1, 0}}));
     // Collinear corners make a degenerate corner, not a convex one.
     EXPECT_FALSE(is_planar_convex(std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}}));
+}
+
+// Polygons that turn the same way at every corner but wind twice (found by fuzz_obj: OpenMesh asserts on a
+// face that repeats a vertex).
+TEST(Polygon, PolygonsThatWindTwiceAreNotConvex) {
+    const std::vector<glm::dvec3> triangle_twice{{0, 0, 1}, {1, 0, 1}, {1, 0, 0},
+                                                 {0, 0, 1}, {1, 0, 1}, {0, 0, 0}};
+    EXPECT_FALSE(is_planar_convex(triangle_twice));
+    std::vector<glm::dvec3> pentagram;
+    for (int k = 0; k < 5; ++k) {
+        const double angle = 2.0 * std::numbers::pi * 2 * k / 5;  // every second corner of a pentagon
+        pentagram.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+    }
+    EXPECT_FALSE(is_planar_convex(pentagram));
+    std::vector<glm::dvec3> pentagon;
+    for (int k = 0; k < 5; ++k) {
+        const double angle = 2.0 * std::numbers::pi * k / 5;
+        pentagon.emplace_back(std::cos(angle), std::sin(angle), 0.0);
+    }
+    EXPECT_TRUE(is_planar_convex(pentagon));
 }
 
 TEST(Polygon, ConcavePolygonIsTriangulatedWithoutOverlap) {

@@ -105,7 +105,7 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
         s.accumulated.assign(patches.size(), 0.0);
         return s;
     });
-    return [&patches, &scene, rays, seed, offset, scratch, &covered](
+    return [&patches, &scene, seed, offset, scratch, &covered](
                std::uint32_t i, std::vector<RowEntry>& entries, RowStats& stats) {
         HemisphereScratch& s = scratch->local();
         hemisphere_rays(patches, i, seed, offset, s.rays, s.weights);

@@ -16,9 +16,10 @@ class LineReader {
 
     bool next(std::string_view& line) {
         if (pos_ >= text_.size()) return false;
-        const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+        // A line ends at "\n", "\r\n" or a lone "\r", as tinyobjloader reads it.
+        const std::size_t end = std::min(text_.find_first_of("\r\n", pos_), text_.size());
         line = text_.substr(pos_, end - pos_);
-        pos_ = end + 1;
+        pos_ = end + (text_.substr(end, 2) == "\r\n" ? 2 : 1);
         ++number_;
         if (line.find('\0') != std::string_view::npos) fail("binary data; this is not a text file");
         return true;
@@ -54,6 +55,9 @@ void check_numbers(const LineReader& reader, const std::vector<std::string_view>
         const double value = number_at(reader, words[i]);
         if (must_be_finite && !std::isfinite(value)) {
             reader.fail("coordinate " + quote_for_message(words[i]) + " is not a finite number");
+        }
+        if (must_be_finite && std::abs(value) > kMaxCoordinate) {
+            reader.fail("coordinate " + quoted(words[i]) + " is beyond ±1e30");
         }
     }
 }
@@ -142,9 +146,11 @@ ObjFacts check_obj_text(std::string_view text, const std::string& path, const Sc
             check_numbers(reader, words, 3, 3, false);
             count_one(reader, counts.vn, limits.vertices, "normals");
         } else if (key == "f") {
-            check_face(reader, words, counts);
+            const std::vector<std::string_view> corners =
+                split_whitespace(line);  // tinyobjloader reads past '#'
+            check_face(reader, corners, counts);
             count_one(reader, facts.face_count, limits.faces, "faces");
-            count_one(reader, counts.corners, limits.face_corners, "face corners", words.size() - 1);
+            count_one(reader, counts.corners, limits.face_corners, "face corners", corners.size() - 1);
         } else if (key == "mtllib") {
             add_libraries(reader, words, facts);
         } else if (key == "usemtl") {

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "rad/error.hpp"
@@ -14,6 +16,12 @@
 namespace rad {
 
 namespace {
+
+// OpenMesh's reader (9.0) reads only a subset of PLY faithfully. It takes the header word by word, skips an
+// unknown property by one value even when it is a list, reads coordinates as float, cannot read double
+// colours or list counts other than uchar, uint8, uint16 and int, and stores the colour of a face it could
+// not add at index -1. Outside the subset it reads other bytes than those checked here, or writes out of
+// bounds, so the header must keep to it: the checks below say where.
 
 enum class Format { ascii, binary_little_endian, binary_big_endian };
 
@@ -27,6 +35,7 @@ struct Element {
     std::string name;
     std::uint64_t count = 0;
     std::vector<Property> properties;
+    std::size_t line = 0;  // of its declaration, for messages
 };
 
 struct Header {
@@ -49,6 +58,47 @@ bool is_float_type(const std::string& type) {
     return type == "float" || type == "float32" || type == "double" || type == "float64";
 }
 
+bool is_double_type(const std::string& type) {
+    return type == "double" || type == "float64";
+}
+
+// The values an integer type holds; OpenMesh reads an ASCII value that does not fit wrapped or not at all.
+struct IntegerRange {
+    double min = 0.0;
+    double max = 0.0;
+};
+
+IntegerRange integer_range(const std::string& type) {
+    if (type == "char" || type == "int8") return {-128.0, 127.0};
+    if (type == "uchar" || type == "uint8") return {0.0, 255.0};
+    if (type == "short" || type == "int16") return {-32768.0, 32767.0};
+    if (type == "ushort" || type == "uint16") return {0.0, 65535.0};
+    if (type == "int" || type == "int32") return {-2147483648.0, 2147483647.0};
+    return {0.0, 4294967295.0};
+}
+
+bool is_one_of(std::string_view word, std::initializer_list<std::string_view> words) {
+    return std::find(words.begin(), words.end(), word) != words.end();
+}
+
+// The vertex properties OpenMesh reads as float (in binary files only from float or double).
+bool is_vertex_float(const Element& e, const Property& p) {
+    return e.name == "vertex" && is_one_of(p.name, {"x", "y", "z", "nx", "ny", "nz", "u", "s", "v", "t"});
+}
+bool is_colour(const Element& e, const Property& p) {
+    if (e.name == "vertex") {
+        return is_one_of(p.name,
+                         {"red", "green", "blue", "alpha", "diffuse_red", "diffuse_green", "diffuse_blue"});
+    }
+    return e.name == "face" && is_one_of(p.name, {"red", "green", "blue", "alpha"});
+}
+bool is_coordinate(const Element& e, const Property& p) {
+    return e.name == "vertex" && is_one_of(p.name, {"x", "y", "z"});
+}
+bool is_face_indices(const Element& e, const Property& p) {
+    return e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
 [[noreturn]] void fail_at(const std::string& path, std::size_t line, const std::string& what) {
     throw InputError(path + ":" + std::to_string(line) + ": " + what);
 }
@@ -57,14 +107,20 @@ bool is_float_type(const std::string& type) {
 double min_element_bytes(const Element& e, Format format) {
     if (format == Format::ascii) return 2.0 * static_cast<double>(e.properties.size());  // "0 " per value
     double bytes = 0.0;
-    for (const Property& p : e.properties)
+    for (const Property& p : e.properties) {
         bytes += static_cast<double>(type_size(p.count_type.empty() ? p.type : p.count_type));
+    }
     return bytes;
 }
 
+// OpenMesh takes the three words after "ply" as the format line, whatever they are, and loops for ever on
+// a version it cannot read as a float.
 Format parse_format(const std::string& path, std::size_t line, const std::vector<std::string_view>& words) {
-    if (words.size() < 2)
-        fail_at(path, line, "'format' needs ascii, binary_little_endian or binary_big_endian");
+    double version = 0.0;
+    if (words[0] != "format" || words.size() != 3 || !parse_number(words[2], version) || version != 1.0) {
+        fail_at(path, line,
+                "the line after 'ply' must be 'format ascii|binary_little_endian|binary_big_endian 1.0'");
+    }
     if (words[1] == "ascii") return Format::ascii;
     if (words[1] == "binary_little_endian") return Format::binary_little_endian;
     if (words[1] == "binary_big_endian") return Format::binary_big_endian;
@@ -77,71 +133,174 @@ Property parse_property(const std::string& path, std::size_t line,
     if (words.size() == 3 && type_size(std::string(words[1])) > 0) {
         p.type = words[1];
         p.name = words[2];
-        return p;
-    }
-    if (words.size() == 5 && words[1] == "list" && type_size(std::string(words[2])) > 0 &&
-        type_size(std::string(words[3])) > 0 && !is_float_type(std::string(words[2]))) {
+    } else if (words.size() == 5 && words[1] == "list" && type_size(std::string(words[2])) > 0 &&
+               type_size(std::string(words[3])) > 0 && !is_float_type(std::string(words[2]))) {
         p.count_type = words[2];
         p.type = words[3];
         p.name = words[4];
-        return p;
+    } else {
+        fail_at(path, line, "malformed property declaration");
     }
-    fail_at(path, line, "malformed property declaration");
+    // OpenMesh tells type from name by the type names, in either order.
+    if (type_size(p.name) > 0) fail_at(path, line, "a property named '" + p.name + "', a type name");
+    return p;
 }
 
-// OpenMesh reads faces against the vertices read before them, and one list of each.
-void check_new_element(const std::string& path, std::size_t line, const Header& header,
-                       std::string_view name) {
-    bool has_vertex = false;
-    for (const Element& e : header.elements) {
-        if (e.name == name) fail_at(path, line, "a second '" + std::string(name) + "' element");
-        has_vertex |= e.name == "vertex";
+// The declarations OpenMesh reads as they are meant.
+void check_declaration(const std::string& path, std::size_t line, const Element& e, const Property& p) {
+    const bool list = !p.count_type.empty();
+    if (is_face_indices(e, p)) {
+        if (!list) fail_at(path, line, "'" + p.name + "' must be a list");
+        if (!is_one_of(p.count_type, {"uchar", "uint8", "uint16", "int"})) {
+            fail_at(path, line,
+                    "list count type '" + p.count_type + "': OpenMesh reads uchar, uint8, uint16 or int");
+        }
+        if (is_float_type(p.type))
+            fail_at(path, line, "vertex indices of type '" + p.type + "'; want an integer type");
+        return;
     }
-    if (name == "face" && !has_vertex) fail_at(path, line, "'face' element before the 'vertex' element");
+    if (list)
+        fail_at(path, line,
+                "list property '" + p.name + "': the only list read is the face's vertex_indices");
+    if (is_vertex_float(e, p) && !is_float_type(p.type)) {
+        fail_at(path, line,
+                "vertex property '" + p.name + "' of type '" + p.type + "'; want float or double");
+    }
+    if (is_colour(e, p) && is_double_type(p.type)) {
+        fail_at(path, line,
+                "colour '" + p.name + "' of type '" + p.type + "'; want an integer type or float");
+    }
 }
 
-Header parse_header(const std::string& path, const std::string& bytes) {
-    if (bytes.compare(0, 3, "ply") != 0)
-        throw InputError(path + ": not a PLY file (it does not start with 'ply')");
-    Header header;
-    std::size_t pos = 0;
-    std::size_t line = 0;
-    bool ended = false;
-    while (!ended && pos < bytes.size()) {
-        const std::size_t end = std::min(bytes.find('\n', pos), bytes.size());
-        const std::string_view text(bytes.data() + pos, end - pos);
-        pos = end + 1;
-        ++line;
-        const std::vector<std::string_view> words = split_words(text);
-        if (words.empty()) continue;
-        if (words[0] == "format") {
-            header.format = parse_format(path, line, words);
-        } else if (words[0] == "element") {
-            long long count = 0;
-            if (words.size() != 3 || !parse_integer(words[2], count) || count < 0) {
-                fail_at(path, line, "malformed element declaration");
-            }
-            check_new_element(path, line, header, words[1]);
-            header.elements.push_back({std::string(words[1]), static_cast<std::uint64_t>(count), {}});
-        } else if (words[0] == "property") {
-            if (header.elements.empty()) fail_at(path, line, "'property' before any 'element'");
-            header.elements.back().properties.push_back(parse_property(path, line, words));
-        } else if (words[0] == "end_header") {
-            ended = true;
+// A line OpenMesh skips word by word, as unknown keywords: one of these words in it would start a declaration
+// that this check does not see.
+void check_skipped_line(const std::string& path, std::size_t line,
+                        const std::vector<std::string_view>& words) {
+    for (const std::string_view word : words) {
+        if (is_one_of(word, {"element", "property", "end_header"})) {
+            fail_at(path, line, "'" + std::string(word) + "' inside a '" + std::string(words[0]) + "' line");
         }
     }
-    if (!ended) throw InputError(path + ": not a PLY file (no 'end_header')");
-    header.body_offset = std::min(pos, bytes.size());
-    header.body_line = line + 1;
-    return header;
+}
+
+// OpenMesh finds a binary body 12 bytes (14 with CRLF) after the last header word before end_header.
+void check_binary_body_start(const std::string& path, std::size_t line, std::string_view header_text) {
+    const auto ends_directly_with = [&](std::string_view tail) {
+        return header_text.ends_with(tail) && header_text.size() > tail.size() &&
+               !std::isspace(static_cast<unsigned char>(header_text[header_text.size() - tail.size() - 1]));
+    };
+    if (!ends_directly_with("\nend_header\n") && !ends_directly_with("\r\nend_header\r\n")) {
+        fail_at(
+            path, line,
+            "in a binary PLY file 'end_header' must follow the last declaration on the next line, alone, and "
+            "end with one newline");
+    }
+}
+
+class HeaderParser {
+  public:
+    HeaderParser(const std::string& path, const std::string& bytes) : path_(path), bytes_(bytes) {}
+
+    Header parse() {
+        std::vector<std::string_view> words;
+        if (!next_line(words) || words.size() != 1 || words[0] != "ply") {
+            throw InputError(path_ + ": not a PLY file (it does not start with a line 'ply')");
+        }
+        bool more = next_line(words);
+        while (more && words.empty()) more = next_line(words);
+        if (!more) throw InputError(path_ + ": not a PLY file (no 'end_header')");
+        header_.format = parse_format(path_, line_, words);
+        while (next_line(words)) {
+            if (words.empty() || words[0] == "comment") continue;
+            if (words[0] == "end_header") return finish(words);
+            declare(words);
+        }
+        throw InputError(path_ + ": not a PLY file (no 'end_header')");
+    }
+
+  private:
+    bool next_line(std::vector<std::string_view>& words) {
+        if (pos_ >= bytes_.size()) return false;
+        const std::size_t end = std::min(bytes_.find('\n', pos_), bytes_.size());
+        words = split_whitespace(std::string_view(bytes_.data() + pos_, end - pos_));
+        pos_ = end + 1;
+        ++line_;
+        return true;
+    }
+
+    void declare(const std::vector<std::string_view>& words) {
+        if (words[0] == "format") fail_at(path_, line_, "a second 'format' line");
+        if (words[0] == "element") {
+            long long count = 0;
+            if (words.size() != 3 || !parse_integer(words[2], count) || count < 0) {
+                fail_at(path_, line_, "malformed element declaration");
+            }
+            header_.elements.push_back({std::string(words[1]), static_cast<std::uint64_t>(count), {}, line_});
+        } else if (words[0] == "property") {
+            if (header_.elements.empty()) fail_at(path_, line_, "'property' before any 'element'");
+            Element& element = header_.elements.back();
+            element.properties.push_back(parse_property(path_, line_, words));
+            check_declaration(path_, line_, element, element.properties.back());
+        } else {
+            check_skipped_line(path_, line_, words);
+        }
+    }
+
+    Header finish(const std::vector<std::string_view>& words) {
+        if (words.size() != 1) fail_at(path_, line_, "'end_header' must stand alone on its line");
+        header_.body_offset = std::min(pos_, bytes_.size());
+        header_.body_line = line_ + 1;
+        if (header_.format != Format::ascii) {
+            check_binary_body_start(path_, line_, std::string_view(bytes_).substr(0, header_.body_offset));
+        }
+        return header_;
+    }
+
+    const std::string& path_;
+    const std::string& bytes_;
+    std::size_t pos_ = 0;
+    std::size_t line_ = 0;
+    Header header_;
+};
+
+std::size_t count_named(const Element& e, bool (*matches)(const Element&, const Property&)) {
+    return static_cast<std::size_t>(std::count_if(e.properties.begin(), e.properties.end(),
+                                                  [&](const Property& p) { return matches(e, p); }));
+}
+
+// One vertex element with x, y and z, then one face element with one index list: OpenMesh adds vertices and
+// faces in the order of the elements, and a face it cannot add gets its colour stored out of bounds.
+void check_elements(const std::string& path, const Header& header) {
+    bool seen_vertex = false;
+    bool seen_face = false;
+    for (const Element& e : header.elements) {
+        if (e.count > 0 && e.properties.empty())
+            fail_at(path, e.line, "element '" + e.name + "' has no properties");
+        if (e.name == "vertex") {
+            if (seen_vertex) fail_at(path, e.line, "a second 'vertex' element");
+            for (const char* name : {"x", "y", "z"}) {
+                const auto named = [name](const Property& p) { return p.name == name; };
+                if (std::count_if(e.properties.begin(), e.properties.end(), named) != 1) {
+                    fail_at(path, e.line,
+                            std::string("the vertex element needs one property '") + name + "'");
+                }
+            }
+            seen_vertex = true;
+        } else if (e.name == "face") {
+            if (seen_face) fail_at(path, e.line, "a second 'face' element");
+            if (!seen_vertex) fail_at(path, e.line, "the face element comes before the vertex element");
+            if (count_named(e, is_face_indices) != 1) {
+                fail_at(path, e.line, "the face element needs one list 'vertex_indices'");
+            }
+            seen_face = true;
+        }
+    }
 }
 
 void check_limit(const std::string& path, const Element& e, std::size_t limit, const char* kind) {
     if (e.count > limit) {
         throw InputError(path + ": header declares " + std::to_string(e.count) + " " + kind +
-                         "; the limit for one "
-                         "scene file is " +
-                         std::to_string(limit));
+                         "; the limit for one scene file is " + std::to_string(limit));
     }
 }
 
@@ -166,14 +325,6 @@ struct Checks {
     std::size_t max_face_corners = 0;
 };
 
-bool is_coordinate(const Element& e, const Property& p) {
-    return e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z");
-}
-bool is_face_index_list(const Element& e, const Property& p) {
-    return e.name == "face" && !p.count_type.empty() &&
-           (p.name == "vertex_indices" || p.name == "vertex_index");
-}
-
 // Reads values from the body: whitespace-separated words (ASCII) or fixed-size binary fields.
 class BodyReader {
   public:
@@ -191,7 +342,7 @@ class BodyReader {
         skip_blank_lines();
         if (pos_ >= bytes_.size()) fail("the file ends before " + where_);
         const std::size_t end = std::min(bytes_.find('\n', pos_), bytes_.size());
-        words_ = split_words(std::string_view(bytes_.data() + pos_, end - pos_));
+        words_ = split_whitespace(std::string_view(bytes_.data() + pos_, end - pos_));
         word_ = 0;
         pos_ = end + 1;
         ++line_;
@@ -201,16 +352,10 @@ class BodyReader {
     }
 
     double value(const std::string& type) {
-        if (format_ == Format::ascii) {
-            if (word_ >= words_.size()) fail("fewer values than the header declares");
-            double v = 0.0;
-            const std::string_view w = words_[word_++];
-            if (!parse_number(w, v)) fail(bad_number_message(w));
-            if (!is_float_type(type) && v != std::floor(v))
-                fail("'" + std::string(w) + "' is not an integer");
-            return v;
-        }
-        return binary_value(type);
+        if (format_ != Format::ascii) return binary_value(type);
+        if (word_ >= words_.size()) fail("fewer values than the header declares");
+        const std::string_view w = words_[word_++];
+        return is_float_type(type) ? ascii_number(w) : ascii_integer(w, type);
     }
 
     [[noreturn]] void fail(const std::string& what) const {
@@ -228,10 +373,27 @@ class BodyReader {
     void skip_blank_lines() {
         while (pos_ < bytes_.size()) {
             const std::size_t end = std::min(bytes_.find('\n', pos_), bytes_.size());
-            if (!split_words(std::string_view(bytes_.data() + pos_, end - pos_)).empty()) return;
+            if (!split_whitespace(std::string_view(bytes_.data() + pos_, end - pos_)).empty()) return;
             pos_ = end + 1;
             ++line_;
         }
+    }
+
+    double ascii_number(std::string_view w) const {
+        double v = 0.0;
+        if (!parse_number(w, v)) fail(bad_number_message(w));
+        return v;
+    }
+
+    // Plain digits only: OpenMesh reads "1.0" or "1e2" as 1 and the rest as the next value.
+    double ascii_integer(std::string_view w, const std::string& type) const {
+        long long v = 0;
+        if (!parse_integer(w, v)) fail("'" + std::string(w.substr(0, 40)) + "' is not an integer");
+        const IntegerRange range = integer_range(type);
+        if (static_cast<double>(v) < range.min || static_cast<double>(v) > range.max) {
+            fail("'" + std::string(w) + "' does not fit the type " + type);
+        }
+        return static_cast<double>(v);
     }
 
     double binary_value(const std::string& type) {
@@ -271,37 +433,70 @@ class BodyReader {
     std::size_t word_ = 0;
 };
 
+// OpenMesh reads floating-point values as float: beyond its range they become infinite, or in ASCII stop the
+// stream; and it scales a float colour by 255 into an int.
+void check_scalar(const BodyReader& body, const Element& e, const Property& p, double v) {
+    const bool coordinate = is_coordinate(e, p);
+    if (is_float_type(p.type)) {
+        if (!std::isfinite(v)) body.fail((coordinate ? "coordinate " : "") + p.name + " is not finite");
+        if (std::abs(v) > static_cast<double>(std::numeric_limits<float>::max())) {
+            body.fail(p.name + " is beyond the range of float");
+        }
+    }
+    if (coordinate && std::abs(v) > kMaxCoordinate) body.fail("coordinate " + p.name + " is beyond ±1e30");
+    if (is_colour(e, p)) {
+        const double max = is_float_type(p.type) ? 1.0 : 255.0;
+        if (!(v >= 0.0 && v <= max)) {
+            body.fail("colour " + p.name + " outside [0, " + (max == 1.0 ? "1]" : "255]"));
+        }
+    }
+}
+
+void check_face_indices(BodyReader& body, const Property& p, double count, const Checks& checks) {
+    // OpenMesh cannot add a face of fewer than 3 corners or with a corner repeated (see check_elements).
+    if (count < 3) {
+        body.fail("a face needs at least 3 corners, found " + std::to_string(static_cast<int>(count)));
+    }
+    std::vector<double> corners;
+    for (int i = 0; i < static_cast<int>(count); ++i) {
+        const double v = body.value(p.type);
+        if (!(v >= 0 && v < static_cast<double>(checks.vertex_count))) {
+            body.fail("vertex index " + std::to_string(static_cast<long long>(v)) + " is out of range (" +
+                      std::to_string(checks.vertex_count) + " vertices)");
+        }
+        corners.push_back(v);
+    }
+    std::sort(corners.begin(), corners.end());
+    if (const auto repeated = std::adjacent_find(corners.begin(), corners.end()); repeated != corners.end()) {
+        body.fail("vertex index " + std::to_string(static_cast<long long>(*repeated)) +
+                  " appears twice in one face; a face's corners must be distinct");
+    }
+}
+
 void check_property(BodyReader& body, const Element& e, const Property& p, Checks& checks) {
     if (p.count_type.empty()) {
-        const double v = body.value(p.type);
-        if (is_coordinate(e, p) && !std::isfinite(v)) body.fail("coordinate " + p.name + " is not finite");
+        check_scalar(body, e, p, body.value(p.type));
         return;
     }
+    // The only list check_declaration lets through: the face's corners.
     const double count = body.value(p.count_type);
     if (count < 0 || count > static_cast<double>(kMaxFaceCorners)) {
         body.fail("list '" + p.name + "' of " + std::to_string(static_cast<long long>(count)) +
                   " items; the limit is " + std::to_string(kMaxFaceCorners));
     }
-    if (is_face_index_list(e, p)) {
-        checks.face_corners += static_cast<std::size_t>(count);
-        if (checks.face_corners > checks.max_face_corners) {
-            body.fail("more than " + std::to_string(checks.max_face_corners) +
-                      " face corners; the limit for one scene file");
-        }
+    checks.face_corners += static_cast<std::size_t>(count);
+    if (checks.face_corners > checks.max_face_corners) {
+        body.fail("more than " + std::to_string(checks.max_face_corners) +
+                  " face corners; the limit for one scene file");
     }
-    for (int i = 0; i < static_cast<int>(count); ++i) {
-        const double v = body.value(p.type);
-        if (is_face_index_list(e, p) && !(v >= 0 && v < static_cast<double>(checks.vertex_count))) {
-            body.fail("vertex index " + std::to_string(static_cast<long long>(v)) + " is out of range (" +
-                      std::to_string(checks.vertex_count) + " vertices)");
-        }
-    }
+    check_face_indices(body, p, count, checks);
 }
 
 }  // namespace
 
 void check_ply(const std::string& path, const std::string& bytes, const SceneFileLimits& limits) {
-    const Header header = parse_header(path, bytes);
+    const Header header = HeaderParser(path, bytes).parse();
+    check_elements(path, header);
     check_counts(path, header, bytes.size() - header.body_offset, limits);
     Checks checks;
     checks.max_face_corners = limits.face_corners;

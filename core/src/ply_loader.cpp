@@ -22,12 +22,18 @@ struct PlyTraits : OpenMesh::DefaultTraits {
 using PlyMesh = OpenMesh::PolyMesh_ArrayKernelT<PlyTraits>;
 
 // check_ply has already refused malformed files, so OpenMesh's own complaints (on its error stream) would
-// only repeat ours; keep the terminal clean while it reads. (Redirecting the stream instead leaks in
-// OpenMesh 9's mostream.)
+// only repeat ours, and its log names every header word it skips ("Unsupported keyword"); keep the terminal
+// clean while it reads. (Redirecting the streams instead leaks in OpenMesh 9's mostream.)
 class QuietOpenMesh {
 public:
-    QuietOpenMesh() { omerr().disable(); }
-    ~QuietOpenMesh() { omerr().enable(); }
+    QuietOpenMesh() {
+        omerr().disable();
+        omlog().disable();
+    }
+    ~QuietOpenMesh() {
+        omerr().enable();
+        omlog().enable();
+    }
     QuietOpenMesh(const QuietOpenMesh&) = delete;
     QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
 };

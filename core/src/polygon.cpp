@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <numbers>
 #include <numeric>
 
 namespace rad {
@@ -52,13 +53,18 @@ bool is_planar_convex(std::span<const glm::dvec3> polygon, double relative_toler
     for (const auto& p : polygon) {
         if (std::abs(glm::dot(p - centre, unit)) > relative_tolerance * size) return false;
     }
-    // Every corner turns the same way as the normal, by more than round-off.
+    // Every corner turns the same way as the normal, by more than round-off, and all corners together turn
+    // once around: a polygon that winds twice (a pentagram, or a triangle traced twice) turns the same way
+    // at every corner too, and repeats or crosses itself.
+    double turning = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         const glm::dvec3 e0 = polygon[(i + 1) % count] - polygon[i];
         const glm::dvec3 e1 = polygon[(i + 2) % count] - polygon[(i + 1) % count];
-        if (glm::dot(glm::cross(e0, e1), unit) <= 1e-12 * size * size) return false;
+        const double across = glm::dot(glm::cross(e0, e1), unit);  // |e0| |e1| sin(turn)
+        if (across <= 1e-12 * size * size) return false;
+        turning += std::atan2(across, glm::dot(e0, e1));
     }
-    return true;
+    return turning < 3.0 * std::numbers::pi;  // 2π for a convex polygon, 2πk for one that winds k times
 }
 
 namespace {

@@ -23,6 +23,10 @@ struct SceneFileLimits {
 // time quadratic in their size.
 constexpr std::size_t kMaxFaceCorners = 4096;
 
+// Largest coordinate magnitude a scene file may hold: far beyond any real scene, it keeps the squares (areas)
+// and fourth powers (form-factor kernels) of lengths finite.
+constexpr double kMaxCoordinate = 1e30;
+
 // Distinct material libraries one OBJ file may name.
 constexpr std::size_t kMaxMaterialLibraries = 64;
 

@@ -43,6 +43,10 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes) {
 
 std::vector<std::string_view> split_words(std::string_view line) {
     if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    return split_whitespace(line);
+}
+
+std::vector<std::string_view> split_whitespace(std::string_view line) {
     std::vector<std::string_view> words;
     std::size_t i = 0;
     while (i < line.size()) {
@@ -55,7 +59,10 @@ std::vector<std::string_view> split_words(std::string_view line) {
 }
 
 bool parse_number(std::string_view word, double& value) {
-    if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+    if (word.starts_with('+')) {
+        word.remove_prefix(1);
+        if (word.starts_with('-')) return false;  // "+-1": from_chars would take the '-'
+    }
     const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
     return ec == std::errc() && end == word.data() + word.size() && !word.empty();
 }

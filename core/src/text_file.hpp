@@ -17,6 +17,8 @@ std::string quote_for_message(std::string_view word);
 
 // The whitespace-separated words of a line, its comment (from '#') removed.
 std::vector<std::string_view> split_words(std::string_view line);
+// The whitespace-separated words of a line, '#' included (PLY has no such comments).
+std::vector<std::string_view> split_whitespace(std::string_view line);
 
 // Parses the whole word as a number; false for anything else ("1.5x", "", "--").
 bool parse_number(std::string_view word, double& value);
