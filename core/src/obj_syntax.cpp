@@ -57,7 +57,7 @@ void check_numbers(const LineReader& reader, const std::vector<std::string_view>
             reader.fail("coordinate " + quote_for_message(words[i]) + " is not a finite number");
         }
         if (must_be_finite && std::abs(value) > kMaxCoordinate) {
-            reader.fail("coordinate " + quoted(words[i]) + " is beyond ±1e30");
+            reader.fail("coordinate " + quote_for_message(words[i]) + " is beyond ±1e30");
         }
     }
 }
