@@ -42,7 +42,8 @@ std::filesystem::path resolve_material_library(const std::string& obj_path, cons
         path /= part;
         std::error_code ec;
         const fs::file_status status = fs::symlink_status(path, ec);
-        if (status.type() == fs::file_type::not_found) return {};
+        // A name longer than the file system allows cannot exist either.
+        if (status.type() == fs::file_type::not_found || ec == std::errc::filename_too_long) return {};
         if (ec) refuse_library(obj_path, lib, "cannot be inspected: " + ec.message());
         if (fs::is_symlink(status))
             refuse_library(obj_path, lib, "is reached through a link (" + path.string() + ")");
