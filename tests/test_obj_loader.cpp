@@ -1,9 +1,9 @@
 // The OBJ + MTL loader: what it makes of good files, and a one-line error naming file and line for bad ones.
 #include <gtest/gtest.h>
 
+#include "expect_input_error.hpp"
 #include "rad/error.hpp"
 #include "rad/scene_loader.hpp"
-#include "expect_input_error.hpp"
 #include "test_support.hpp"
 
 namespace rad {
@@ -66,12 +66,13 @@ TEST(ObjLoader, UsemtlRunsInOneObjectAreSeparateSurfaces) {
 
 TEST(ObjLoader, OnlyPolygonsThatAreNotPlanarConvexAreTriangulated) {
     TempDir dir;
-    const std::string obj = dir.write("p.obj",
-                                      // a convex pentagon, an L-shaped hexagon, a non-planar quad
-                                      "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\n"
-                                      "v 0 0 5\nv 2 0 5\nv 2 1 5\nv 1 1 5\nv 1 2 5\nv 0 2 5\n"
-                                      "v 0 0 9\nv 1 0 9\nv 1 1 9.3\nv 0 1 9\n"
-                                      "g pentagon\nf 1 2 3 4 5\ng ell\nf 6 7 8 9 10 11\ng bent\nf 12 13 14 15\n");
+    const std::string obj =
+        dir.write("p.obj",
+                  // a convex pentagon, an L-shaped hexagon, a non-planar quad
+                  "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\n"
+                  "v 0 0 5\nv 2 0 5\nv 2 1 5\nv 1 1 5\nv 1 2 5\nv 0 2 5\n"
+                  "v 0 0 9\nv 1 0 9\nv 1 1 9.3\nv 0 1 9\n"
+                  "g pentagon\nf 1 2 3 4 5\ng ell\nf 6 7 8 9 10 11\ng bent\nf 12 13 14 15\n");
     const Scene scene = load_obj(obj);
     EXPECT_EQ(find_surface(scene, "pentagon")->mesh.n_faces(), 1u);
     EXPECT_EQ(find_surface(scene, "ell")->mesh.n_faces(), 4u);
@@ -93,13 +94,15 @@ TEST(ObjLoader, ZeroAreaFacesAreDroppedAndCounted) {
 
 TEST(ObjLoader, MissingMtlFallsBackToTheDefaultMaterial) {
     TempDir dir;
-    const std::string obj = dir.write("m.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl white\nf 1 2 3\n");
+    const std::string obj =
+        dir.write("m.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl white\nf 1 2 3\n");
     const Scene scene = load_obj(obj);
     expect_rgb(scene.surfaces.at(0).material.reflectance, glm::dvec3(0.5));
     EXPECT_EQ(scene.surfaces.at(0).material.emission, glm::dvec3(0.0));
     bool warned = false;
-    for (const auto& w : scene.warnings) warned |= w.find("m.obj:1: material library 'gone.mtl' not found") == 0 ||
-                                                    w.find("gone.mtl' not found") != std::string::npos;
+    for (const auto& w : scene.warnings)
+        warned |= w.find("m.obj:1: material library 'gone.mtl' not found") == 0 ||
+                  w.find("gone.mtl' not found") != std::string::npos;
     EXPECT_TRUE(warned);
 }
 
@@ -110,8 +113,11 @@ TEST(ObjLoader, MtlNameTooLongForTheFileSystemIsNotFound) {
     const Scene scene =
         load_obj(dir.write("long.obj", "mtllib " + name + ".mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n"));
     ASSERT_FALSE(scene.warnings.empty());
-    EXPECT_NE(scene.warnings[0].find("long.obj:1: material library '" + name + ".mtl' not found"),
-              std::string::npos);
+    // Messages show a long name cut short.
+    EXPECT_NE(
+        scene.warnings[0].find("long.obj:1: material library '" + name.substr(0, 40) + "...' not found"),
+        std::string::npos)
+        << scene.warnings[0];
 }
 
 TEST(ObjLoader, BadInputNamesFileAndLine) {
