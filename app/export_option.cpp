@@ -1,9 +1,9 @@
 #include "export_option.hpp"
 
 #include <cmath>
-#include <filesystem>
 
 #include "number_checks.hpp"
+#include "output_folder.hpp"
 #include "rad/error.hpp"
 #include "rad/file_names.hpp"
 #include "rad/scene_export.hpp"
@@ -33,10 +33,7 @@ void check_export_paths(const std::vector<std::string>& paths) {
                              (ext.empty() ? "no extension" : "unknown export format '" + ext + "'") +
                              " (use .ply, .gltf or .glb)");
         }
-        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-        if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-            throw InputError("--export " + path + ": the folder " + folder.string() + " does not exist");
-        }
+        require_output_folder("--export", path);
     }
 }
 

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "output_folder.hpp"
 #include "rad/atomic_file.hpp"
 #include "rad/error.hpp"
 #include "rad/file_names.hpp"
@@ -98,10 +99,7 @@ void check_image_path(const std::string& path) {
     if (ext != ".png" && ext != ".exr" && ext != ".pfm") {
         throw InputError("--out " + path + ": unknown image format '" + ext + "' (use .png, .exr or .pfm)");
     }
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-        throw InputError("--out " + path + ": the folder " + folder.string() + " does not exist");
-    }
+    require_output_folder("--out", path);
 }
 
 void write_image(const std::string& path, const RadianceImage& image, double exposure) {

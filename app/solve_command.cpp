@@ -5,12 +5,12 @@
 #include <sys/resource.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "commands.hpp"
 #include "export_option.hpp"
+#include "output_folder.hpp"
 #include "progress_bar.hpp"
 #include "rad/error.hpp"
 #include "rad/solution_json.hpp"
@@ -31,14 +31,6 @@ std::size_t peak_memory_bytes() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
-}
-
-// Refuses a --json path whose folder does not exist before any long work is done.
-void check_output_folder(const std::string& path) {
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-        throw InputError("--json " + path + ": the folder " + folder.string() + " does not exist");
-    }
 }
 
 void print_transport(std::ostream& out, const RadiosityPipeline& pipeline, const SolveStatistics& stats) {
@@ -112,7 +104,7 @@ SolveStatistics statistics(const RadiosityPipeline& pipeline) {
 }
 
 int run_solve(const SolveCommandOptions& options) {
-    check_output_folder(options.json_path);
+    require_output_folder("--json", options.json_path);
     check_export_paths(options.exports);
     RadiosityPipeline pipeline(options.pipeline);
     {

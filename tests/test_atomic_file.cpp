@@ -3,7 +3,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "rad/atomic_file.hpp"
@@ -11,13 +10,6 @@
 
 namespace rad {
 namespace {
-
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::size_t entries(const std::filesystem::path& folder) {
     std::size_t count = 0;
@@ -36,7 +28,7 @@ TEST(AtomicFile, TheTemporaryLiesBesideTheTargetAndKeepsItsExtension) {
     EXPECT_EQ(seen.parent_path(), dir.path());
     EXPECT_EQ(seen.extension(), ".glb");
     EXPECT_NE(seen.filename(), target.filename());
-    EXPECT_EQ(read_text(target), "new");
+    EXPECT_EQ(test::read_file_text(target), "new");
     EXPECT_EQ(entries(dir.path()), 1u);
 }
 
@@ -49,7 +41,7 @@ TEST(AtomicFile, AFailedWriteLeavesTheOldFileAndNoTemporary) {
                                              throw std::runtime_error("disk full");
                                          }),
                  std::runtime_error);
-    EXPECT_EQ(read_text(target), "old");
+    EXPECT_EQ(test::read_file_text(target), "old");
     EXPECT_EQ(entries(dir.path()), 1u);
     // A writer that makes no file at all: the rename fails, and still nothing is left.
     EXPECT_THROW(replace_file_atomically(dir.path() / "new.ply", [](const std::filesystem::path&) {}),
@@ -60,7 +52,7 @@ TEST(AtomicFile, AFailedWriteLeavesTheOldFileAndNoTemporary) {
 TEST(AtomicFile, WriteFileAtomicallyWritesTheText) {
     test::TempDir dir;
     write_file_atomically(dir.path() / "a.json", "{}\n");
-    EXPECT_EQ(read_text(dir.path() / "a.json"), "{}\n");
+    EXPECT_EQ(test::read_file_text(dir.path() / "a.json"), "{}\n");
     EXPECT_EQ(entries(dir.path()), 1u);
 }
 

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,13 +12,6 @@
 
 namespace rad {
 namespace {
-
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::vector<std::string> split(const std::string& line, char separator) {
     std::vector<std::string> fields;
@@ -31,7 +23,7 @@ std::vector<std::string> split(const std::string& line, char separator) {
 
 // The CSV as one map of column name to value per row.
 std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::path& path) {
-    std::stringstream in(read_text(path));
+    std::stringstream in(test::read_file_text(path));
     std::string line;
     std::getline(in, line);
     const std::vector<std::string> header = split(line, ',');
@@ -148,8 +140,8 @@ TEST(QuickBench, RunsAndReportsWhatHoldsTogether) {
         EXPECT_TRUE(std::filesystem::exists(out.folder / name)) << name;
     }
     out.rows = read_csv(out.folder / "bench.csv");
-    out.table = read_text(out.folder / "bench.md");
-    out.svg = read_text(out.folder / "bench.svg");
+    out.table = test::read_file_text(out.folder / "bench.md");
+    out.svg = test::read_file_text(out.folder / "bench.svg");
     EXPECT_EQ(out.table, result.out.substr(0, out.table.size()));  // the table is what it printed
     {
         SCOPED_TRACE("every solver, both estimators, two meshes");

@@ -15,16 +15,12 @@ extern char** environ;
 
 namespace rad::test {
 
-namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+std::string read_file_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
 }
-
-}  // namespace
 
 CommandResult run_radiosity(const std::vector<std::string>& args) {
     return run_program(RAD_BINARY, args);
@@ -66,8 +62,8 @@ CommandResult run_program(const std::string& program, const std::vector<std::str
     waitpid(pid, &wait_status, 0);
     CommandResult result;
     result.status = WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
-    result.out = slurp(out_path);
-    result.err = slurp(err_path);
+    result.out = read_file_text(out_path);
+    result.err = read_file_text(err_path);
     return result;
 }
 
@@ -89,6 +85,5 @@ std::string TempDir::write(const std::string& name, const std::string& text) con
     std::ofstream(p, std::ios::binary) << text;
     return p.string();
 }
-
 
 }  // namespace rad::test

@@ -16,6 +16,8 @@ struct CommandResult {
 CommandResult run_radiosity(const std::vector<std::string>& args);
 // Runs `program` (a path, or a name looked up in PATH) with these arguments, likewise.
 CommandResult run_program(const std::string& program, const std::vector<std::string>& args);
+// The whole file's bytes (empty if it cannot be read).
+std::string read_file_text(const std::filesystem::path& path);
 // The full path of `name` found in PATH, or empty.
 std::string find_in_path(const std::string& name);
 
@@ -34,6 +36,5 @@ class TempDir {
   private:
     std::filesystem::path path_;
 };
-
 
 }  // namespace rad::test
