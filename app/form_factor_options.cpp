@@ -36,10 +36,11 @@ void add_form_factor_options(CLI::App& command, FormFactorOptions& options) {
         ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case))
         ->default_str("hemisphere");
     command
-        .add_option(
-            "--rays", options.rays,
-            "Rays per patch for hemisphere (default 4096), shadow rays per pair of patches for analytic "
-            "(default 16)")
+        .add_option("--rays", options.rays,
+                    "Rays per patch for hemisphere (default " + std::to_string(kDefaultHemisphereRays) +
+                        "; light sources' factors are analytic), shadow rays per pair of patches for "
+                        "analytic (default " +
+                        std::to_string(kDefaultAnalyticRays) + ")")
         ->check(CLI::PositiveNumber);
     command
         .add_option("--seed", options.seed,
@@ -67,6 +68,7 @@ void add_form_factor_options(CLI::App& command, FormFactorOptions& options) {
 FormFactorOptions form_factor_options_for(const FormFactorOptions& options, const LoadedScene& loaded) {
     FormFactorOptions out = options;
     out.patch_size = loaded.patch_size;
+    out.emitting_surfaces = emitting_surfaces(loaded.scene);
     out.count_patches_at = [&scene = loaded.scene](double patch_size) {
         return count_patches(scene, patch_size);
     };

@@ -1,6 +1,5 @@
 #include "scene_image_renderer.hpp"
 
-#include "gl/offscreen_target.hpp"
 #include "rad/camera_view.hpp"
 #include "rad/display_outline.hpp"
 
@@ -23,13 +22,22 @@ void SceneImageRenderer::refresh_colours() {
 }
 
 RadianceImage SceneImageRenderer::render(const Camera& camera, int width, int height) const {
-    OffscreenTarget target(width, height);
-    target.bind();
-    DrawOptions draw;
-    draw.outline = outline_;
-    const double aspect = double(width) / double(height);
-    renderer_.draw(view_projection(camera, aspect, bounding_box(pipeline_.loaded().scene)), draw);
+    const OffscreenTarget target(width, height);
+    draw(camera, target);
     return RadianceImage{width, height, target.read_pixels()};
+}
+
+void SceneImageRenderer::draw_frame(const Camera& camera, const OffscreenTarget& target) const {
+    draw(camera, target);
+    glFinish();
+}
+
+void SceneImageRenderer::draw(const Camera& camera, const OffscreenTarget& target) const {
+    target.bind();
+    DrawOptions options;
+    options.outline = outline_;
+    const double aspect = double(target.width()) / double(target.height());
+    renderer_.draw(view_projection(camera, aspect, bounding_box(pipeline_.loaded().scene)), options);
 }
 
 }  // namespace rad

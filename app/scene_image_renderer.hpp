@@ -1,5 +1,6 @@
 #pragma once
 
+#include "gl/offscreen_target.hpp"
 #include "gl/renderer.hpp"
 #include "image_io.hpp"
 #include "radiosity_pipeline.hpp"
@@ -15,10 +16,15 @@ class SceneImageRenderer {
 
     void refresh_colours();
     RadianceImage render(const Camera& camera, int width, int height) const;
+    // Draws one frame from `camera` into `target` and waits until it is drawn: what a further viewpoint
+    // costs a viewer, whose framebuffer exists already and is shown rather than read back.
+    void draw_frame(const Camera& camera, const OffscreenTarget& target) const;
 
     const Renderer& renderer() const { return renderer_; }
 
   private:
+    void draw(const Camera& camera, const OffscreenTarget& target) const;
+
     const RadiosityPipeline& pipeline_;
     Renderer renderer_;
     bool outline_;

@@ -48,10 +48,17 @@ struct Solution {
     double seconds = 0.0;
 };
 
+// The form-factor options the program uses: the default ones, with the scene's emitters.
+FormFactorOptions program_options(const Scene& scene, FormFactorOptions ff) {
+    ff.emitting_surfaces = emitting_surfaces(scene);
+    return ff;
+}
+
 Solution solve_uniform(const Scene& scene, double patch_size, const FormFactorOptions& ff = {}) {
     const auto start = std::chrono::steady_clock::now();
     Solution out{build_patches(scene, MeshingOptions{patch_size}), {}, 0.0};
-    const RadiositySystem system = make_radiosity_system(scene, out.mesh, compute_form_factors(out.mesh, ff));
+    const RadiositySystem system =
+        make_radiosity_system(scene, out.mesh, compute_form_factors(out.mesh, program_options(scene, ff)));
     const auto solver = make_solver(SolverMethod::conjugate_gradient, system, SolverOptions{});
     while (!solver->report().finished()) solver->step();
     out.radiosity.assign(solver->solution().begin(), solver->solution().end());
@@ -61,8 +68,9 @@ Solution solve_uniform(const Scene& scene, double patch_size, const FormFactorOp
 
 AdaptiveResult adapt(const Scene& scene, double base_size, const AdaptiveOptions& options,
                      const FormFactorOptions& ff = {}) {
-    return subdivide_adaptively(scene, build_patches(scene, MeshingOptions{base_size}), ff,
-                                SolverMethod::conjugate_gradient, SolverOptions{}, options);
+    return subdivide_adaptively(scene, build_patches(scene, MeshingOptions{base_size}),
+                                program_options(scene, ff), SolverMethod::conjugate_gradient, SolverOptions{},
+                                options);
 }
 
 void print_passes(const AdaptiveReport& report) {

@@ -28,6 +28,8 @@ class Determinism : public testing::TestWithParam<FormFactorMethod> {
         o.method = GetParam();
         o.rays = GetParam() == FormFactorMethod::hemisphere ? 1024 : 8;
         o.seed = 7;
+        o.emitting_surfaces =
+            emitting_surfaces(make_cornell_box());  // hemisphere: the light's columns analytic
         return o;
     }
 };

@@ -24,6 +24,7 @@ std::string asset(const std::string& name) {
 FormFactorMatrix form_factors(const PatchMesh& patches, FormFactorMethod method) {
     FormFactorOptions options;
     options.method = method;
+    if (method == FormFactorMethod::hemisphere) options.rays = 4096;  // the tolerances below are for 4096
     return compute_form_factors(patches, options);
 }
 

@@ -26,6 +26,7 @@ const MeshedScene& subdivided_cube() {
         m.patches = build_patches(m.scene, MeshingOptions{.patch_size = 0.25});
         FormFactorOptions form_factors;
         form_factors.normalize_rows = true;
+        form_factors.emitting_surfaces = emitting_surfaces(m.scene);
         m.form_factors = compute_form_factors(m.patches, form_factors);
         return m;
     }();

@@ -17,21 +17,22 @@ BenchPlan default_bench_plan(bool quick) {
         plan.reference_spp = 16;
         plan.comparison_sizes = {64};
         plan.comparison_max_spp = 16;
+        plan.further_view_frames = 2;
         plan.adaptive_tolerances = {0.5};
         plan.hierarchical_tolerances = {0.05};
         return plan;
     }
     plan.size_factors = {2.0, 1.4, 1.0, 0.7};
-    plan.estimators = {{FormFactorMethod::hemisphere, 4096},
+    plan.estimators = {{FormFactorMethod::hemisphere, 2048},
                        {FormFactorMethod::hemisphere, 1024},
+                       {FormFactorMethod::hemisphere, 4096},
                        {FormFactorMethod::hemisphere, 16384},
-                       {FormFactorMethod::analytic, 4},
-                       {FormFactorMethod::analytic, 16}};
+                       {FormFactorMethod::analytic, 4}};
     plan.analytic_max_patches = 2600;
     plan.direct_max_patches = 2600;
     plan.reference_paths = 4'000'000;
     plan.image_size = 256;
-    plan.reference_spp = 128;
+    plan.reference_spp = 512;
     plan.comparison_sizes = {256, 1024};
     plan.comparison_max_spp = 1024;
     plan.adaptive_tolerances = {0.25, 0.15};

@@ -35,7 +35,8 @@ struct BenchPlan {
     // Image sides at which radiosity is set beside the path tracer, on the first scene, at the default mesh
     // (or the one nearest it) with the default estimator and solver.
     std::vector<int> comparison_sizes;
-    int comparison_max_spp = 0;  // the path tracer's search for radiosity's image error stops here
+    int comparison_max_spp = 0;    // the path tracer's search for radiosity's image error stops here
+    int further_view_frames = 10;  // frames whose mean time is a further view's cost
     // Adaptive subdivision and hierarchical radiosity at these --refine-tol values (default first or base
     // patches and solver), per scene.
     std::vector<double> adaptive_tolerances;

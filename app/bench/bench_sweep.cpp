@@ -175,7 +175,8 @@ class SceneSweep {
         row.links = pipeline.form_factor_report().nonzeros;
         row.patch_size = pipeline.loaded().patch_size;
         row.estimator =
-            (method == "hierarchical" ? "links" : "hemisphere 4096") + format(" tol %.3g", tolerance);
+            (method == "hierarchical" ? "links" : "hemisphere " + std::to_string(kDefaultHemisphereRays)) +
+            format(" tol %.3g", tolerance);
         row.solver = std::string(solver_method_name(pipeline.method()));
         row.steps = report.step;
         row.converged = report.status == SolverStatus::converged;
@@ -246,6 +247,20 @@ class SceneSweep {
         return block_relative_error(view_of(image), view_of(twin)) / std::sqrt(2.0);
     }
 
+    // The mean time of a frame from a new viewpoint, drawn into a framebuffer of `size`² that exists
+    // already (as a viewer's does) and waited for; each frame's camera has moved on a little.
+    double further_view_seconds(const SceneImageRenderer& renderer, int size) const {
+        const OffscreenTarget target(size, size);
+        Camera moved = camera_;
+        renderer.draw_frame(moved, target);  // the first draw into a new framebuffer pays for setting it up
+        const auto start = std::chrono::steady_clock::now();
+        for (int frame = 0; frame < plan_.further_view_frames; ++frame) {
+            moved.eye += 0.01 * (camera_.target - camera_.eye);
+            renderer.draw_frame(moved, target);
+        }
+        return seconds_since(start) / plan_.further_view_frames;
+    }
+
     void compare_with_path_tracer(const RadiosityPipeline& pipeline, const BenchRow& row) {
         int spp = 1;
         for (int size : plan_.comparison_sizes) {
@@ -254,14 +269,10 @@ class SceneSweep {
             c.image_size = size;
             c.radiosity_image_error = row.image_error;
             const SceneImageRenderer renderer(pipeline, false);
-            auto start = std::chrono::steady_clock::now();
+            const auto start = std::chrono::steady_clock::now();
             renderer.render(camera_, size, size);
             c.radiosity_first_seconds = row.seconds() + seconds_since(start);
-            Camera moved = camera_;
-            moved.eye += 0.05 * (camera_.target - camera_.eye);
-            start = std::chrono::steady_clock::now();
-            renderer.render(moved, size, size);
-            c.radiosity_further_seconds = seconds_since(start);
+            c.radiosity_further_seconds = further_view_seconds(renderer, size);
             for (; spp <= plan_.comparison_max_spp; spp *= 2) {
                 const ReferenceImage image = render_reference(pipeline.loaded(), size, spp, spp);
                 c.path_tracer_spp = spp;

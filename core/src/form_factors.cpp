@@ -6,6 +6,7 @@
 #include "form_factors_analytic.hpp"
 #include "form_factors_coverage.hpp"
 #include "form_factors_diagnostics.hpp"
+#include "form_factors_emitter_columns.hpp"
 #include "form_factors_exposure.hpp"
 #include "form_factors_hemisphere.hpp"
 #include "form_factors_memory.hpp"
@@ -36,12 +37,29 @@ void fill_report(FormFactorReport& report, const FormFactorMatrix& matrix,
     report.memory_bytes = matrix.memory_bytes();
     report.nonzeros = matrix.nonzeros();
     report.rays = stats.rays;
-    report.escaped_ray_fraction =
-        stats.rays > 0 ? static_cast<double>(stats.escaped_rays) / static_cast<double>(stats.rays) : 0.0;
+    report.escaped_ray_fraction = stats.hemisphere_rays > 0 ? static_cast<double>(stats.escaped_rays) /
+                                                                  static_cast<double>(stats.hemisphere_rays)
+                                                            : 0.0;
     report.max_reciprocity_error = final_d.max_reciprocity_error;
     report.mean_reciprocity_error = final_d.mean_reciprocity_error;
     report.min_row_sum = final_d.min_row_sum;
     report.max_row_sum = final_d.max_row_sum;
+}
+
+// A seed of its own for the emitter columns' shadow rays, so they share no random numbers with the hemisphere
+// rays.
+constexpr std::uint64_t kEmitterSeedSalt = 0x5eed'e417'7e55'0001ull;
+
+RowFunction hemisphere_rows_with_emitters(const PatchMesh& patches, const RayScene& scene, int rays,
+                                          const FormFactorOptions& options, std::vector<double>& covered) {
+    const std::vector<std::uint32_t> emitters =
+        analytic_emitter_columns(patches, options.emitting_surfaces, rays);
+    RowFunction hemisphere =
+        hemisphere_rows(patches, scene, rays, options.seed, covered, column_flags(patches.size(), emitters));
+    if (emitters.empty()) return hemisphere;
+    const int shadow_rays = emitter_shadow_rays(emitters.size(), rays);
+    return merged_rows(std::move(hemisphere), analytic_rows(patches, scene, shadow_rays,
+                                                            options.seed ^ kEmitterSeedSalt, {}, emitters));
 }
 
 }  // namespace
@@ -60,12 +78,13 @@ FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactor
     if (patches.size() > 0) {
         const RayScene scene(patches);
         const RowFunction row = options.method == FormFactorMethod::hemisphere
-                                    ? hemisphere_rows(patches, scene, rays, options.seed, covered)
+                                    ? hemisphere_rows_with_emitters(patches, scene, rays, options, covered)
                                     : analytic_rows(patches, scene, rays, options.seed);
         matrix = assemble_rows(patches.size(), row, stats, progress);
         // The analytic rows' shadow rays do not tell covered points apart; probe every patch (a small cost
         // beside its pairs).
-        if (options.method == FormFactorMethod::analytic) measure_coverage(patches, scene, options.seed, covered);
+        if (options.method == FormFactorMethod::analytic)
+            measure_coverage(patches, scene, options.seed, covered);
     }
 
     const FormFactorDiagnostics estimate = diagnose(matrix, patches);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 #include <memory>
+#include <numeric>
 #include <vector>
 
 #include "form_factors_hemisphere.hpp"
@@ -129,21 +130,32 @@ struct AnalyticScratch {
 }  // namespace
 
 double unoccluded_form_factor(const ConvexPolygon& receiver_part, const glm::dvec3& receiver_centroid,
-                              const glm::dvec3& receiver_normal, double receiver_area, const ConvexPolygon& source,
-                              const glm::dvec3& source_normal, const AdaptiveRule& rule) {
-    auto kernel = [&](const glm::dvec3& x) { return point_polygon_factor(x, receiver_normal, source.span()); };
+                              const glm::dvec3& receiver_normal, double receiver_area,
+                              const ConvexPolygon& source, const glm::dvec3& source_normal,
+                              const AdaptiveRule& rule) {
+    auto kernel = [&](const glm::dvec3& x) {
+        return point_polygon_factor(x, receiver_normal, source.span());
+    };
     SourceDistance distance(source, source_normal, receiver_centroid, receiver_normal);
     const AdaptiveIntegral integral(rule, kernel, distance);
     return integral.over(receiver_part) / receiver_area;
 }
 
 RowFunction analytic_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
-                          const AdaptiveRule& rule) {
+                          const AdaptiveRule& rule, std::span<const std::uint32_t> columns) {
     auto shapes = std::make_shared<const std::vector<PatchShape>>(patch_shapes(patches));
+    std::vector<std::uint32_t> all_columns;
+    if (columns.empty()) {
+        all_columns.resize(patches.size());
+        std::iota(all_columns.begin(), all_columns.end(), 0u);
+    }
+    auto sources = std::make_shared<const std::vector<std::uint32_t>>(
+        columns.empty() ? std::move(all_columns)
+                        : std::vector<std::uint32_t>(columns.begin(), columns.end()));
     auto scratch = std::make_shared<tbb::enumerable_thread_specific<AnalyticScratch>>();
     const double offset = ray_offset(patches);
     const auto per_pair = static_cast<std::size_t>(rays);
-    return [&scene, shapes, scratch, per_pair, seed, offset, rule](
+    return [&scene, shapes, sources, scratch, per_pair, seed, offset, rule](
                std::uint32_t i, std::vector<RowEntry>& entries, RowStats& stats) {
         const std::vector<PatchShape>& shape = *shapes;
         AnalyticScratch& s = scratch->local();
@@ -151,7 +163,7 @@ RowFunction analytic_rows(const PatchMesh& patches, const RayScene& scene, int r
         s.rays.clear();
         s.strata.resize(2 * per_pair);
         const PatchShape& pi = shape[i];
-        for (std::uint32_t j = 0; j < shape.size(); ++j) {
+        for (std::uint32_t j : *sources) {
             if (j == i) continue;
             const PatchShape& pj = shape[j];
             const ConvexPolygon source = clip_to_front(pj.polygon, pi.centroid, pi.normal);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "form_factors_quadrature.hpp"
 #include "form_factors_rows.hpp"
@@ -8,9 +9,6 @@
 #include "rad/patches.hpp"
 
 namespace rad {
-
-// Shadow rays per pair of patches when FormFactorOptions::rays is 0: a 4 x 4 stratified pairing.
-inline constexpr int kDefaultAnalyticRays = 16;
 
 // F_ij = V_ij (1/A_i) ∫_Qi F(x -> Rj) dA(x), where Rj is patch j clipped to the front of patch i's plane, Qi
 // is patch i clipped to the front of patch j's plane, F(x -> Rj) is Lambert's point-to-polygon factor,
@@ -21,10 +19,12 @@ inline constexpr int kDefaultAnalyticRays = 16;
 // analytic_rows uses, for any two planar convex polygons (source already clipped to the front of the
 // receiver's plane, receiver_part to the front of the source's).
 double unoccluded_form_factor(const ConvexPolygon& receiver_part, const glm::dvec3& receiver_centroid,
-                              const glm::dvec3& receiver_normal, double receiver_area, const ConvexPolygon& source,
-                              const glm::dvec3& source_normal, const AdaptiveRule& rule = {});
+                              const glm::dvec3& receiver_normal, double receiver_area,
+                              const ConvexPolygon& source, const glm::dvec3& source_normal,
+                              const AdaptiveRule& rule = {});
 
+// With `columns` (sorted), only the entries of those columns are computed; empty means all columns.
 RowFunction analytic_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
-                          const AdaptiveRule& rule = {});
+                          const AdaptiveRule& rule = {}, std::span<const std::uint32_t> columns = {});
 
 }  // namespace rad

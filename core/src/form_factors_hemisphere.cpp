@@ -95,7 +95,7 @@ void hemisphere_rays(const PatchMesh& patches, std::uint32_t patch, std::uint64_
 }
 
 RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
-                            std::vector<double>& covered) {
+                            std::vector<double>& covered, std::vector<std::uint8_t> skipped) {
     const double offset = ray_offset(patches);
     auto scratch = std::make_shared<tbb::enumerable_thread_specific<HemisphereScratch>>([&patches, rays] {
         HemisphereScratch s;
@@ -105,7 +105,8 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
         s.accumulated.assign(patches.size(), 0.0);
         return s;
     });
-    return [&patches, &scene, seed, offset, scratch, &covered](
+    skipped.resize(patches.size(), 0);
+    return [&patches, &scene, seed, offset, scratch, &covered, skipped = std::move(skipped)](
                std::uint32_t i, std::vector<RowEntry>& entries, RowStats& stats) {
         HemisphereScratch& s = scratch->local();
         hemisphere_rays(patches, i, seed, offset, s.rays, s.weights);
@@ -119,11 +120,13 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
                 const double weight = s.weights[first + k];
                 if (j == RayHit::kBackFace) blocked += weight;
                 if (j >= patches.size() || j == i || !(weight > 0.0)) continue;  // escaped or blocked
+                if (skipped[j]) continue;
                 if (s.accumulated[j] == 0.0) s.touched.push_back(j);
                 s.accumulated[j] += weight;
             }
         }
         stats.rays += s.rays.size();
+        stats.hemisphere_rays += s.rays.size();
         std::sort(s.touched.begin(), s.touched.end());
         const double scale = 1.0 / static_cast<double>(s.rays.size());
         // Rays that met back faces came from covered points or passed under a single-sided sheet; probes

@@ -2,18 +2,13 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "form_factors_rows.hpp"
 #include "rad/embree_scene.hpp"
 #include "rad/patches.hpp"
 
 namespace rad {
-
-// Rays per patch when FormFactorOptions::rays is 0. A patch's row is a Monte Carlo estimate: with 4096 rays
-// the factor from one unit square to another at distance 1 has a standard deviation of 1.8 % (1-4 % over
-// analytic.md's configurations), and what a radiosity solution sees, many patches together, is far better:
-// 8 x 8 patches per unit square are within 0.5 % (tests/test_form_factors_hemisphere.cpp).
-inline constexpr int kDefaultHemisphereRays = 4096;
 
 // Rays start off their patch, along its normal, so that they do not hit the patch they leave: Embree works in
 // float. The offset is the larger of kRayOffsetFraction of the scene's bounding-box diagonal and
@@ -36,7 +31,9 @@ void hemisphere_rays(const PatchMesh& patches, std::uint32_t patch, std::uint64_
 // blocked and count for no patch; rays that meet nothing have escaped.
 // covered[i] receives the share of patch i that other geometry covers (covered_share), measured for the
 // patches whose rays met back faces. `covered` must have one element per patch.
+// Rays that meet a patch marked in `skipped` (one flag per patch, or empty) count for nothing: another
+// estimator fills those columns (emitter_columns).
 RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
-                            std::vector<double>& covered);
+                            std::vector<double>& covered, std::vector<std::uint8_t> skipped = {});
 
 }  // namespace rad

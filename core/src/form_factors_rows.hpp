@@ -17,10 +17,12 @@ struct RowEntry {
 
 struct RowStats {
     std::uint64_t rays = 0;
+    std::uint64_t hemisphere_rays = 0;  // of `rays`: those sent into the hemisphere, which may escape
     std::uint64_t escaped_rays = 0;
 
     RowStats& operator+=(const RowStats& other) {
         rays += other.rays;
+        hemisphere_rays += other.hemisphere_rays;
         escaped_rays += other.escaped_rays;
         return *this;
     }

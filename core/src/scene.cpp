@@ -48,4 +48,12 @@ bool has_emitter(const Scene& scene) {
                        [](const Surface& s) { return s.material.emits(); });
 }
 
+std::vector<std::uint32_t> emitting_surfaces(const Scene& scene) {
+    std::vector<std::uint32_t> surfaces;
+    for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
+        if (scene.surfaces[s].material.emits()) surfaces.push_back(s);
+    }
+    return surfaces;
+}
+
 }  // namespace rad

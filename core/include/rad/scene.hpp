@@ -50,12 +50,16 @@ struct Scene {
     std::vector<std::string> warnings;  // for the caller to show; the library prints nothing
 };
 
-inline glm::dvec3 to_glm(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
+inline glm::dvec3 to_glm(const OpenMesh::Vec3d& p) {
+    return {p[0], p[1], p[2]};
+}
 
 double face_area(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle face);
 double surface_area(const SurfaceMesh& mesh);
 double total_area(const Scene& scene);
 BoundingBox bounding_box(const Scene& scene);
 bool has_emitter(const Scene& scene);
+// The indices of the surfaces whose material emits.
+std::vector<std::uint32_t> emitting_surfaces(const Scene& scene);
 
 }  // namespace rad
