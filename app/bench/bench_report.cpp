@@ -43,18 +43,21 @@ std::string run_table(const BenchResults& results) {
 std::string comparison_table(const BenchResults& results) {
     std::string text =
         "| scene | image | radiosity image error | radiosity first image s | radiosity further view s | "
-        "path tracer spp to that error | path tracer s per image | first: path tracer / radiosity | "
-        "further: path tracer / radiosity |\n|---|---|---|---|---|---|---|---|---|\n";
+        "path tracer measured: spp (image error) | path tracer spp to that error | path tracer s per image | "
+        "first: path tracer / radiosity | further: path tracer / radiosity |\n"
+        "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const PathTracerComparison& c : results.comparisons) {
-        const std::string reached =
-            c.path_tracer_reached ? "" : " (not reached: " + percent(c.path_tracer_error) + ")";
+        const PathTracerSearch& p = c.path_tracer;
+        std::string measured = std::to_string(p.reached.spp) + " (" + percent(p.reached.error) + ")";
+        if (p.above.spp > 0)
+            measured = std::to_string(p.above.spp) + " (" + percent(p.above.error) + "), " + measured;
+        const std::string spp = p.found ? format("%.0f", p.spp) : "not reached";
         text += "| " + c.scene + " | " + format("%.0f²", c.image_size) + " | " +
                 percent(c.radiosity_image_error) + " | " +
-                format("%.3f | %.4f | ", c.radiosity_first_seconds, c.radiosity_further_seconds) +
-                std::to_string(c.path_tracer_spp) + reached + " | " +
-                format("%.3f | ", c.path_tracer_seconds) +
-                format("%.2f | ", c.path_tracer_seconds / c.radiosity_first_seconds) +
-                format("%.0f |\n", c.path_tracer_seconds / c.radiosity_further_seconds);
+                format("%.3f | %.4f | ", c.radiosity_first_seconds, c.radiosity_further_seconds) + measured +
+                " | " + spp + " | " + format("%.3f | ", p.seconds) +
+                format("%.2f | ", p.seconds / c.radiosity_first_seconds) +
+                format("%.0f |\n", p.seconds / c.radiosity_further_seconds);
     }
     return text;
 }

@@ -102,9 +102,11 @@ class SceneSweep {
         camera_ = scene_camera(base.scene);
         reference_image_ =
             render_reference(base, plan_.image_size, plan_.reference_spp, plan_.reference_spp * 7919);
+        const double noise = block_relative_noise(view_of(reference_image_), reference_image_.standard_error);
         results_.notes.push_back(scene_ + ": reference image " + std::to_string(plan_.image_size) + "² at " +
                                  std::to_string(plan_.reference_spp) + " paths per pixel, " +
-                                 format("%.1f s", reference_image_.stats.seconds));
+                                 format("%.1f s", reference_image_.stats.seconds) +
+                                 format(", noise %.2f %% in the image error's measure", 100 * noise));
         // Radiosity is set beside the path tracer at the default mesh, or the one nearest it.
         const auto nearest_default = std::min_element(
             plan_.size_factors.begin(), plan_.size_factors.end(),
@@ -262,7 +264,7 @@ class SceneSweep {
     }
 
     void compare_with_path_tracer(const RadiosityPipeline& pipeline, const BenchRow& row) {
-        int spp = 1;
+        int spp = 8;
         for (int size : plan_.comparison_sizes) {
             PathTracerComparison c;
             c.scene = scene_;
@@ -273,19 +275,18 @@ class SceneSweep {
             renderer.render(camera_, size, size);
             c.radiosity_first_seconds = row.seconds() + seconds_since(start);
             c.radiosity_further_seconds = further_view_seconds(renderer, size);
-            for (; spp <= plan_.comparison_max_spp; spp *= 2) {
-                const ReferenceImage image = render_reference(pipeline.loaded(), size, spp, spp);
-                c.path_tracer_spp = spp;
-                c.path_tracer_seconds = image.stats.seconds;
-                c.path_tracer_error = path_tracer_error(image, pipeline.loaded(), size, spp);
-                if (c.path_tracer_error <= c.radiosity_image_error) {
-                    c.path_tracer_reached = true;
-                    break;
-                }
-            }
-            spp = std::max(1, spp / 2);  // a larger image needs about as many paths per pixel: start near
-            log_(format("path tracer at %.0f²: ", size) + std::to_string(c.path_tracer_spp) +
-                 format(" spp, %.2f s", c.path_tracer_seconds));
+            const auto measure = [&](int paths) {
+                const ReferenceImage image = render_reference(pipeline.loaded(), size, paths, paths);
+                const double error = path_tracer_error(image, pipeline.loaded(), size, paths);
+                log_(format("path tracer at %.0f²: ", size) + std::to_string(paths) +
+                     format(" spp, %.2f s, ", image.stats.seconds) +
+                     format("image error %.2f %%", 100 * error));
+                return PathTracerSample{paths, image.stats.seconds, error};
+            };
+            c.path_tracer =
+                find_path_tracer_spp(measure, c.radiosity_image_error, spp, plan_.comparison_max_spp);
+            // A larger image needs about as many paths per pixel: start the next search near.
+            if (c.path_tracer.found) spp = c.path_tracer.reached.spp;
             results_.comparisons.push_back(c);
         }
     }

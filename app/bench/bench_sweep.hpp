@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bench/bench_plan.hpp"
+#include "bench/path_tracer_search.hpp"
 #include "image_io.hpp"
 #include "rad/form_factors.hpp"
 #include "rad/progress.hpp"
@@ -44,10 +45,10 @@ struct PathTracerComparison {
     double radiosity_image_error = 0.0;      // of the default run, against the reference at image_size
     double radiosity_first_seconds = 0.0;    // mesh, form factors, solve and this render
     double radiosity_further_seconds = 0.0;  // one more viewpoint: one frame
-    int path_tracer_spp = 0;                 // the fewest paths per pixel reaching radiosity's image error
-    double path_tracer_error = 0.0;          // what those reached
-    double path_tracer_seconds = 0.0;        // per image (first or further: the path tracer redoes all)
-    bool path_tracer_reached = false;        // false: not reached within the plan's largest spp
+    // The path tracer's images at powers of two paths per pixel that bracket radiosity's image error
+    // (find_path_tracer_spp), and the paths per pixel and seconds per image interpolated to reach it
+    // (first image or further: the path tracer redoes all).
+    PathTracerSearch path_tracer;
 };
 
 // An image worth keeping for a person to look at: the default run's and the path tracer's, per scene.

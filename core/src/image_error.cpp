@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -75,23 +76,72 @@ double block_error(const ImageView& image, const ImageView& reference, int x0, i
     return error / channels.count;
 }
 
+// The expected relative error that the reference's noise alone gives one block (see block_relative_noise).
+double block_noise(const ImageView& reference, std::span<const glm::vec3> standard_error, int x0, int y0,
+                   int size, const Channels& channels, const std::array<double, kMaxChannels>& floor) {
+    std::array<double, kMaxChannels> mean{}, variance{};
+    const int x1 = std::min(x0 + size, reference.width), y1 = std::min(y0 + size, reference.height);
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            const auto index = static_cast<std::size_t>(y) * static_cast<std::size_t>(reference.width) +
+                               static_cast<std::size_t>(x);
+            const auto value = channels.of(reference.pixels[index]);
+            // Channels.of is linear with non-negative weights: applied to the standard errors it adds
+            // them as fully correlated.
+            const auto error = channels.of(standard_error[index]);
+            for (int c = 0; c < channels.count; ++c) {
+                mean[c] += value[c];
+                variance[c] += error[c] * error[c];
+            }
+        }
+    }
+    const double n = static_cast<double>(x1 - x0) * static_cast<double>(y1 - y0);
+    const double mean_absolute_normal = std::sqrt(2.0 / std::numbers::pi);
+    double noise = 0.0;
+    for (int c = 0; c < channels.count; ++c) {
+        const double denominator = std::max(mean[c] / n, floor[c]);
+        if (denominator > 0.0) noise += mean_absolute_normal * std::sqrt(variance[c]) / n / denominator;
+    }
+    return noise / channels.count;
+}
+
+// The pixel-weighted mean over blocks of block_value(x0, y0).
+template <typename BlockValue>
+double mean_over_blocks(const ImageView& reference, int size, BlockValue block_value) {
+    double weighted = 0.0;
+    for (int y0 = 0; y0 < reference.height; y0 += size) {
+        for (int x0 = 0; x0 < reference.width; x0 += size) {
+            const double pixels = static_cast<double>(std::min(size, reference.width - x0)) *
+                                  static_cast<double>(std::min(size, reference.height - y0));
+            weighted += pixels * block_value(x0, y0);
+        }
+    }
+    return weighted / static_cast<double>(reference.pixels.size());
+}
+
 }  // namespace
+
+double block_relative_noise(const ImageView& reference, std::span<const glm::vec3> standard_error,
+                            const ImageErrorOptions& options) {
+    check_sizes(reference, reference, options);
+    if (standard_error.size() != reference.pixels.size()) {
+        throw std::invalid_argument("image noise: one standard error per pixel is needed");
+    }
+    const Channels channels{options.channels == ErrorChannels::rgb ? 3 : 1};
+    const auto floor = floors(reference, channels, options.floor_fraction);
+    return mean_over_blocks(reference, options.block_size, [&](int x0, int y0) {
+        return block_noise(reference, standard_error, x0, y0, options.block_size, channels, floor);
+    });
+}
 
 double block_relative_error(const ImageView& image, const ImageView& reference,
                             const ImageErrorOptions& options) {
     check_sizes(image, reference, options);
     const Channels channels{options.channels == ErrorChannels::rgb ? 3 : 1};
     const auto floor = floors(reference, channels, options.floor_fraction);
-    const int size = options.block_size;
-    double weighted = 0.0;
-    for (int y0 = 0; y0 < reference.height; y0 += size) {
-        for (int x0 = 0; x0 < reference.width; x0 += size) {
-            const double pixels = static_cast<double>(std::min(size, reference.width - x0)) *
-                                  static_cast<double>(std::min(size, reference.height - y0));
-            weighted += pixels * block_error(image, reference, x0, y0, size, channels, floor);
-        }
-    }
-    return weighted / static_cast<double>(reference.pixels.size());
+    return mean_over_blocks(reference, options.block_size, [&](int x0, int y0) {
+        return block_error(image, reference, x0, y0, options.block_size, channels, floor);
+    });
 }
 
 double pixel_relative_error(const ImageView& image, const ImageView& reference,

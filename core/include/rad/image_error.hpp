@@ -41,6 +41,15 @@ struct ImageErrorOptions {
 double block_relative_error(const ImageView& image, const ImageView& reference,
                             const ImageErrorOptions& options = {});
 
+// What a noisy reference's own noise adds to block_relative_error on its own: the expected error of an
+// image that is exactly right, compared with a reference whose pixels have these standard errors (one per
+// pixel, independent from pixel to pixel). Per block it is E|N(0, σ)| = σ √(2/π) over the same
+// denominator, σ the standard error of the block's mean; for luminance the channels' errors add as if fully
+// correlated (a path carries all three), which bounds σ from above. The true error of an image is then
+// about √(error² − noise²). Throws std::invalid_argument when the sizes differ or the image is empty.
+double block_relative_noise(const ImageView& reference, std::span<const glm::vec3> standard_error,
+                            const ImageErrorOptions& options = {});
+
 // The same with blocks of one pixel: the mean over pixels of |image − reference| / max(reference, floor).
 // It includes the reference's per-pixel noise, so it is an upper bound of the error against a noisy
 // reference rather than an estimate of it.
