@@ -6,19 +6,23 @@
 #include "gl/headless_context.hpp"
 #include "gl/offscreen_target.hpp"
 #include "gl/renderer.hpp"
+#include "rad/srgb.hpp"
 
 namespace rad {
 namespace {
 
 // A unit square in z = 0 facing +z, seen head-on by an orthographic camera covering [-1, 1]².
-const std::vector<glm::vec3> kSquare = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
+const std::vector<glm::vec3> kSquare = {
+    {-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
 const std::vector<std::uint32_t> kTriangles = {0, 1, 2, 0, 2, 3};
 const std::vector<std::uint32_t> kOutline = {0, 1, 1, 2, 2, 3, 3, 0};
 
-glm::mat4 front_view() { return glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, -1.0f, 1.0f); }
+glm::mat4 front_view() {
+    return glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, -1.0f, 1.0f);
+}
 
 class RendererTest : public ::testing::Test {
-protected:
+  protected:
     HeadlessContext context;
     Renderer renderer;
     OffscreenTarget target{64, 64};
@@ -31,9 +35,29 @@ TEST_F(RendererTest, FlatColourArrivesExactlyInTheLinearImage) {
     target.bind();
     renderer.draw(front_view(), {});
     const auto pixels = target.read_pixels();
-    EXPECT_EQ(pixels[32 * 64 + 32], colour[0]);  // centre: exactly the radiance given, float storage
+    EXPECT_EQ(pixels[32 * 64 + 32], colour[0]);      // centre: exactly the radiance given, float storage
     EXPECT_EQ(pixels[2 * 64 + 2], glm::vec3(0.0f));  // corner: background
     SCOPED_TRACE(context.description());
+}
+
+// The viewer's kind of framebuffer (8-bit sRGB, one sample): each pixel holds the sRGB code a PNG of the same
+// radiance holds, to the one step by which drivers' rounding may differ, and radiance above 1 shows white.
+TEST_F(RendererTest, DisplayFormatHoldsThePngsSrgbCodes) {
+    OffscreenTarget display(64, 64, 1, PixelFormat::display_srgb8);
+    renderer.upload_geometry(kSquare, kTriangles, kOutline);
+    const glm::vec3 colour(0.2f, 0.5f, 2.0f);
+    renderer.update_colours(std::vector<glm::vec3>(4, colour));
+    display.bind();
+    renderer.draw(front_view(), {});
+    const glm::vec3 shown = display.read_pixels()[32 * 64 + 32];
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(srgb_byte(shown[c]), srgb_byte(colour[c]), 1) << "channel " << c << ": " << shown[c];
+    }
+    EXPECT_FLOAT_EQ(shown.b, 1.0f);
+    // The float target is unaffected by the display target's sRGB switch.
+    target.bind();
+    renderer.draw(front_view(), {});
+    EXPECT_EQ(target.read_pixels()[32 * 64 + 32], colour);
 }
 
 TEST_F(RendererTest, BackFacesAreNotDrawn) {
@@ -48,7 +72,8 @@ TEST_F(RendererTest, BackFacesAreNotDrawn) {
 TEST_F(RendererTest, ColoursInterpolateAndTopRowComesFirst) {
     renderer.upload_geometry(kSquare, kTriangles, {});
     // Bottom corners dark, top corners bright.
-    renderer.update_colours(std::vector<glm::vec3>{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(1.0f), glm::vec3(1.0f)});
+    renderer.update_colours(
+        std::vector<glm::vec3>{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(1.0f), glm::vec3(1.0f)});
     target.bind();
     renderer.draw(front_view(), {});
     const auto pixels = target.read_pixels();

@@ -42,9 +42,10 @@ std::string run_table(const BenchResults& results) {
 
 std::string comparison_table(const BenchResults& results) {
     std::string text =
-        "| scene | image | radiosity image error | radiosity first image s | radiosity further view s | "
+        "| scene | image | radiosity image error | radiosity first image s | "
+        "radiosity further view s: viewer frame (render's float frame) | "
         "path tracer measured: spp (image error) | path tracer spp to that error | path tracer s per image | "
-        "first: path tracer / radiosity | further: path tracer / radiosity |\n"
+        "first: path tracer / radiosity | further: path tracer / radiosity (viewer frame) |\n"
         "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const PathTracerComparison& c : results.comparisons) {
         const PathTracerSearch& p = c.path_tracer;
@@ -53,9 +54,9 @@ std::string comparison_table(const BenchResults& results) {
             measured = std::to_string(p.above.spp) + " (" + percent(p.above.error) + "), " + measured;
         const std::string spp = p.found ? format("%.0f", p.spp) : "not reached";
         text += "| " + c.scene + " | " + format("%.0f²", c.image_size) + " | " +
-                percent(c.radiosity_image_error) + " | " +
-                format("%.3f | %.4f | ", c.radiosity_first_seconds, c.radiosity_further_seconds) + measured +
-                " | " + spp + " | " + format("%.3f | ", p.seconds) +
+                percent(c.radiosity_image_error) + " | " + format("%.3f | ", c.radiosity_first_seconds) +
+                format("%.4f (%.4f) | ", c.radiosity_further_seconds, c.radiosity_further_float_seconds) +
+                measured + " | " + spp + " | " + format("%.3f | ", p.seconds) +
                 format("%.2f | ", p.seconds / c.radiosity_first_seconds) +
                 format("%.0f |\n", p.seconds / c.radiosity_further_seconds);
     }

@@ -251,8 +251,9 @@ class SceneSweep {
 
     // The mean time of a frame from a new viewpoint, drawn into a framebuffer of `size`² that exists
     // already (as a viewer's does) and waited for; each frame's camera has moved on a little.
-    double further_view_seconds(const SceneImageRenderer& renderer, int size) const {
-        const OffscreenTarget target(size, size);
+    double further_view_seconds(const SceneImageRenderer& renderer, int size, int samples,
+                                PixelFormat format) const {
+        const OffscreenTarget target(size, size, samples, format);
         Camera moved = camera_;
         renderer.draw_frame(moved, target);  // the first draw into a new framebuffer pays for setting it up
         const auto start = std::chrono::steady_clock::now();
@@ -274,7 +275,10 @@ class SceneSweep {
             const auto start = std::chrono::steady_clock::now();
             renderer.render(camera_, size, size);
             c.radiosity_first_seconds = row.seconds() + seconds_since(start);
-            c.radiosity_further_seconds = further_view_seconds(renderer, size);
+            // The viewer's window: 8-bit sRGB, one sample per pixel (glfw_window.cpp).
+            c.radiosity_further_seconds = further_view_seconds(renderer, size, 1, PixelFormat::display_srgb8);
+            c.radiosity_further_float_seconds =
+                further_view_seconds(renderer, size, 4, PixelFormat::radiance);
             const auto measure = [&](int paths) {
                 const ReferenceImage image = render_reference(pipeline.loaded(), size, paths, paths);
                 const double error = path_tracer_error(image, pipeline.loaded(), size, paths);

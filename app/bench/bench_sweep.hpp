@@ -42,9 +42,12 @@ struct BenchRow {
 struct PathTracerComparison {
     std::string scene;
     int image_size = 0;
-    double radiosity_image_error = 0.0;      // of the default run, against the reference at image_size
-    double radiosity_first_seconds = 0.0;    // mesh, form factors, solve and this render
-    double radiosity_further_seconds = 0.0;  // one more viewpoint: one frame
+    double radiosity_image_error = 0.0;    // of the default run, against the reference at image_size
+    double radiosity_first_seconds = 0.0;  // mesh, form factors, solve and this render
+    // One more viewpoint: one frame, as the viewer's window draws it (8-bit sRGB, one sample per pixel), and
+    // as `render` draws it (float radiance, 4 samples per pixel).
+    double radiosity_further_seconds = 0.0;
+    double radiosity_further_float_seconds = 0.0;
     // The path tracer's images at powers of two paths per pixel that bracket radiosity's image error
     // (find_path_tracer_spp), and the paths per pixel and seconds per image interpolated to reach it
     // (first image or further: the path tracer redoes all).

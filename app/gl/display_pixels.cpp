@@ -1,0 +1,39 @@
+#include "gl/display_pixels.hpp"
+
+#include <glad/gl.h>
+
+#include <cmath>
+#include <cstdint>
+
+namespace rad {
+
+namespace {
+
+float srgb_decode(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+}  // namespace
+
+std::vector<glm::vec3> read_display_pixels(int width, int height, bool srgb) {
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bytes.data());
+
+    float value_of_byte[256];
+    for (int b = 0; b < 256; ++b) value_of_byte[b] = srgb ? srgb_decode(b / 255.0f) : b / 255.0f;
+    std::vector<glm::vec3> pixels(bytes.size() / 3);
+    for (int y = 0; y < height; ++y) {
+        const std::size_t source_row = static_cast<std::size_t>(height - 1 - y) *
+                                       static_cast<std::size_t>(width);  // OpenGL: bottom first
+        for (int x = 0; x < width; ++x) {
+            const std::uint8_t* rgb = &bytes[(source_row + static_cast<std::size_t>(x)) * 3];
+            pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                   static_cast<std::size_t>(x)] =
+                glm::vec3(value_of_byte[rgb[0]], value_of_byte[rgb[1]], value_of_byte[rgb[2]]);
+        }
+    }
+    return pixels;
+}
+
+}  // namespace rad
