@@ -36,6 +36,7 @@ void SceneImageRenderer::draw(const Camera& camera, const OffscreenTarget& targe
     target.bind();
     DrawOptions options;
     options.outline = outline_;
+    options.encode_srgb = target.format() == PixelFormat::display_srgb8;
     const double aspect = double(target.width()) / double(target.height());
     renderer_.draw(view_projection(camera, aspect, bounding_box(pipeline_.loaded().scene)), options);
 }

@@ -48,7 +48,9 @@ TEST_F(RendererTest, DisplayFormatHoldsThePngsSrgbCodes) {
     const glm::vec3 colour(0.2f, 0.5f, 2.0f);
     renderer.update_colours(std::vector<glm::vec3>(4, colour));
     display.bind();
-    renderer.draw(front_view(), {});
+    DrawOptions encoded;
+    encoded.encode_srgb = true;
+    renderer.draw(front_view(), encoded);
     const glm::vec3 shown = display.read_pixels()[32 * 64 + 32];
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(srgb_byte(shown[c]), srgb_byte(colour[c]), 1) << "channel " << c << ": " << shown[c];

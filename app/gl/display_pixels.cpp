@@ -15,13 +15,13 @@ float srgb_decode(float encoded) {
 
 }  // namespace
 
-std::vector<glm::vec3> read_display_pixels(int width, int height, bool srgb) {
+std::vector<glm::vec3> read_display_pixels(int width, int height) {
     std::vector<std::uint8_t> bytes(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bytes.data());
 
     float value_of_byte[256];
-    for (int b = 0; b < 256; ++b) value_of_byte[b] = srgb ? srgb_decode(b / 255.0f) : b / 255.0f;
+    for (int b = 0; b < 256; ++b) value_of_byte[b] = srgb_decode(static_cast<float>(b) / 255.0f);
     std::vector<glm::vec3> pixels(bytes.size() / 3);
     for (int y = 0; y < height; ++y) {
         const std::size_t source_row = static_cast<std::size_t>(height - 1 - y) *

@@ -26,14 +26,23 @@ OffscreenTarget::OffscreenTarget(int width, int height, int samples, PixelFormat
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     samples = std::clamp(samples, 1, std::max(1, static_cast<int>(max_samples)));
     const bool radiance = format == PixelFormat::radiance;
-    const GLenum colour = radiance ? GL_RGBA32F : GL_SRGB8_ALPHA8;
+    const GLenum colour = radiance ? GL_RGBA32F : GL_RGBA8;
     const GLenum depth = radiance ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24;
 
+    // One sample is asked for as plain storage: a multisampled buffer of one sample is still drawn as
+    // multisampled by some drivers (llvmpipe: two to three times the time per frame).
+    const auto storage = [samples, width, height](GLenum format) {
+        if (samples > 1) {
+            glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+        } else {
+            glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+        }
+    };
     glGenRenderbuffers(3, renderbuffers_);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colour, width, height);
+    storage(colour);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, depth, width, height);
+    storage(depth);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[2]);
     glRenderbufferStorage(GL_RENDERBUFFER, colour, width, height);
 
@@ -58,21 +67,15 @@ OffscreenTarget::~OffscreenTarget() {
 void OffscreenTarget::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, multisampled_fbo_);
     glViewport(0, 0, width_, height_);
-    if (format_ == PixelFormat::display_srgb8) {
-        glEnable(GL_FRAMEBUFFER_SRGB);
-    } else {
-        glDisable(GL_FRAMEBUFFER_SRGB);
-    }
+    glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
 std::vector<glm::vec3> OffscreenTarget::read_pixels() const {
-    // No sRGB conversion on the way: the display format's codes are decoded on the CPU.
-    glDisable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_fbo_);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_fbo_);
-    if (format_ == PixelFormat::display_srgb8) return read_display_pixels(width_, height_, true);
+    if (format_ == PixelFormat::display_srgb8) return read_display_pixels(width_, height_);
     std::vector<glm::vec3> bottom_up(static_cast<std::size_t>(width_) * height_);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_RGB, GL_FLOAT, bottom_up.data());

@@ -10,7 +10,8 @@ namespace rad {
 // What a target stores.
 // radiance:      float RGBA and a float depth buffer: radiance exact for the linear images (EXR, PFM); PNG
 //                encoding happens on the CPU afterwards. What `render` draws into.
-// display_srgb8: 8-bit sRGB and a 24-bit depth buffer, as the viewer's window has: what a frame costs there.
+// display_srgb8: 8-bit sRGB codes, written by the shader (DrawOptions::encode_srgb), and a 24-bit depth
+//                buffer, as the viewer's window has: what a frame costs there.
 enum class PixelFormat { radiance, display_srgb8 };
 
 // A framebuffer to draw into (multisampled when samples > 1), resolved and read back as linear RGB.
@@ -21,8 +22,9 @@ class OffscreenTarget {
     OffscreenTarget(const OffscreenTarget&) = delete;
     OffscreenTarget& operator=(const OffscreenTarget&) = delete;
 
-    // Binds it for drawing, with sRGB encoding on for the display format.
+    // Binds it for drawing (the framebuffer's own sRGB encoding off: the shader encodes).
     void bind() const;
+    PixelFormat format() const { return format_; }
     // Resolves the samples and returns width × height RGB values, top row first: radiance, or for the
     // display format the decoded display values (clamped to [0, 1]).
     std::vector<glm::vec3> read_pixels() const;

@@ -79,6 +79,7 @@ void Renderer::draw(const glm::mat4& view_projection, const DrawOptions& options
     glUniformMatrix4fv(patch_program_.uniform("view_projection"), 1, GL_FALSE,
                        glm::value_ptr(view_projection));
     glUniform1f(patch_program_.uniform("exposure_scale"), options.exposure_scale);
+    glUniform1i(patch_program_.uniform("encode_srgb"), options.encode_srgb ? 1 : 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[kTriangles]);
     // Push the patches back a little so their outline wins the depth test.
     glEnable(GL_POLYGON_OFFSET_FILL);
@@ -91,6 +92,7 @@ void Renderer::draw(const glm::mat4& view_projection, const DrawOptions& options
         glUniformMatrix4fv(outline_program_.uniform("view_projection"), 1, GL_FALSE,
                            glm::value_ptr(view_projection));
         glUniform3fv(outline_program_.uniform("line_colour"), 1, glm::value_ptr(options.outline_colour));
+        glUniform1i(outline_program_.uniform("encode_srgb"), options.encode_srgb ? 1 : 0);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[kOutline]);
         glDrawElements(GL_LINES, static_cast<GLsizei>(outline_index_count_), GL_UNSIGNED_INT, nullptr);
     }

@@ -14,7 +14,10 @@ namespace rad {
 
 struct DrawOptions {
     float exposure_scale = 1.0f;  // 1 for linear output; 2^exposure for the window
-    bool outline = false;         // draw patch edges over the patches
+    // Write the sRGB code of clamp(L · exposure_scale), for 8-bit framebuffers that do not encode (the
+    // viewer's window, display targets); off for float targets, which take radiance.
+    bool encode_srgb = false;
+    bool outline = false;  // draw patch edges over the patches
     glm::vec3 outline_colour{0.0f};
     glm::vec3 background{0.0f};
 };

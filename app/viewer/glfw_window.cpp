@@ -23,13 +23,6 @@ GlfwWindow& owner(GLFWwindow* window) {
     return *static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
 }
 
-bool framebuffer_is_srgb() {
-    GLint encoding = GL_LINEAR;
-    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_BACK_LEFT,
-                                          GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
-    return encoding == GL_SRGB;
-}
-
 }  // namespace
 
 GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
@@ -38,7 +31,6 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_TRUE);
     glfwWindowHint(GLFW_DEPTH_BITS, 24);
     // No multisampling: with a software rasterizer (llvmpipe, Xvfb) 4 samples made frames 4 times slower,
     // over 100 ms while form factors ran. Screenshots differ from `render`'s 4-sample PNGs at edges only.
@@ -60,7 +52,6 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
     glfwSetScrollCallback(window_, on_scroll);
     glfwSetKeyCallback(window_, on_key);
     glfwSetDropCallback(window_, on_drop);
-    srgb_ = framebuffer_is_srgb();
 }
 
 GlfwWindow::~GlfwWindow() {

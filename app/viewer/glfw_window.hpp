@@ -30,8 +30,6 @@ class GlfwWindow {
     void request_close();
     void swap_buffers();
     WindowEvents take_events();
-    // Whether the default framebuffer encodes sRGB (so GL_FRAMEBUFFER_SRGB applies the display curve).
-    bool srgb() const { return srgb_; }
 
   private:
     static void on_scroll(GLFWwindow* window, double dx, double dy);
@@ -40,7 +38,6 @@ class GlfwWindow {
 
     GLFWwindow* window_ = nullptr;
     WindowEvents events_;
-    bool srgb_ = false;
 };
 
 }  // namespace rad

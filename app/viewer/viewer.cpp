@@ -40,10 +40,6 @@ Viewer::Viewer(const ViewerOptions& options)
       worker_(options.pipeline) {
     view_.exposure = options.exposure;
     view_.mode = options.pipeline.display.mode;
-    if (!window_.srgb()) {
-        std::cerr
-            << "radiosity: warning: the window has no sRGB framebuffer; colours look darker than in PNGs\n";
-    }
     if (options.steps > 0) worker_.request_steps(static_cast<std::size_t>(options.steps));
 }
 
@@ -171,8 +167,8 @@ void Viewer::handle_window_events(const WindowEvents& events, PanelRequests& req
 void Viewer::draw_scene(const Framebuffer& framebuffer) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, framebuffer.width, framebuffer.height);
-    // The shader writes L · 2^exposure; the sRGB framebuffer applies the display curve, as PNGs do.
-    if (window_.srgb()) glEnable(GL_FRAMEBUFFER_SRGB);
+    // The shader writes the sRGB code of L · 2^exposure, as PNGs hold, whatever the window's framebuffer.
+    glDisable(GL_FRAMEBUFFER_SRGB);
     if (!camera_ || !geometry_) {
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -180,6 +176,7 @@ void Viewer::draw_scene(const Framebuffer& framebuffer) {
     }
     DrawOptions draw;
     draw.exposure_scale = static_cast<float>(std::exp2(view_.exposure));
+    draw.encode_srgb = true;
     draw.outline = view_.outline;
     const double aspect = double(framebuffer.width) / double(framebuffer.height);
     renderer_.draw(view_projection(camera_->camera(), aspect, geometry_->bounds), draw);
@@ -187,7 +184,7 @@ void Viewer::draw_scene(const Framebuffer& framebuffer) {
 
 std::optional<std::string> Viewer::save_screenshot(const std::string& path, const Framebuffer& framebuffer) {
     try {
-        write_image(path, read_window_image(framebuffer.width, framebuffer.height, window_.srgb()), 0.0);
+        write_image(path, read_window_image(framebuffer.width, framebuffer.height), 0.0);
     } catch (const std::exception& e) {
         std::cerr << "radiosity: error: screenshot " << path << ": " << e.what() << '\n';
         panel_.set_message(std::string("screenshot failed: ") + e.what());

@@ -8,10 +8,10 @@
 
 namespace rad {
 
-RadianceImage read_window_image(int width, int height, bool srgb) {
+RadianceImage read_window_image(int width, int height) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
-    return RadianceImage{width, height, read_display_pixels(width, height, srgb)};
+    return RadianceImage{width, height, read_display_pixels(width, height)};
 }
 
 std::string timestamped_screenshot_path() {
