@@ -145,6 +145,14 @@ TEST(ObjLoader, BadInputNamesFileAndLine) {
     // Coordinates whose squared lengths overflow (found by fuzz_obj: an infinite area).
     expect_obj_error(dir.write("m.obj", "v 0 0 0\nv 2e30 0 0\nv 0 1 0\nf 1 2 3\n"),
                      {"m.obj:2:", "coordinate '2e30' is beyond ±1e30"});
+    // tinyobjloader separates words by spaces and tabs only (found by fuzz_obj: "v\v" was a vertex to the
+    // check but not to tinyobjloader, and the face indexed past the vertices read).
+    expect_obj_error(dir.write("n.obj", "v 0 0 0\nv\v1 0 0\nv 0 1 0\nf 1 2 3\n"),
+                     {"n.obj:2:", "control character 0x0b"});
+    expect_obj_error(dir.write("o.obj", "v 0 0 0\nv 1 0 0\fv 0 1 0\nf 1 2 3\n"),
+                     {"o.obj:2:", "control character 0x0c"});
+    // Tabs do separate words.
+    EXPECT_EQ(load_obj(dir.write("p.obj", "v\t0 0 0\nv 1\t0 0\nv 0 1 0\nf\t1 2 3\n")).surfaces.size(), 1u);
 }
 
 TEST(ObjLoader, BadMaterialsNameTheMtlLine) {

@@ -1,5 +1,6 @@
 #include "obj_syntax.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rad/error.hpp"
@@ -8,6 +9,12 @@
 namespace rad {
 
 namespace {
+
+std::string hex_byte(char c) {
+    static constexpr char kDigits[] = "0123456789abcdef";
+    const auto b = static_cast<unsigned char>(c);
+    return std::string("0x") + kDigits[b >> 4] + kDigits[b & 0xf];
+}
 
 // Walks a text line by line, keeping the line number for messages.
 class LineReader {
@@ -22,6 +29,14 @@ class LineReader {
         pos_ = end + (text_.substr(end, 2) == "\r\n" ? 2 : 1);
         ++number_;
         if (line.find('\0') != std::string_view::npos) fail("binary data; this is not a text file");
+        // tinyobjloader separates words by spaces and tabs only, where std::isspace also takes vertical tabs
+        // and form feeds: "v\v1 2 3" was a vertex to the check and nothing to tinyobjloader, so the check
+        // let faces through that indexed past the vertices read.
+        const auto control = std::find_if(line.begin(), line.end(), [](char c) {
+            return static_cast<unsigned char>(c) < 0x20 && c != '\t';
+        });
+        if (control != line.end())
+            fail("control character " + hex_byte(*control) + "; only spaces and tabs separate words");
         return true;
     }
 
