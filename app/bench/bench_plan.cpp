@@ -17,7 +17,7 @@ BenchPlan default_bench_plan(bool quick) {
         plan.reference_spp = 16;
         plan.comparison_sizes = {64};
         plan.comparison_max_spp = 16;
-        plan.further_view_frames = 2;
+        plan.further_view_frames = 3;
         plan.adaptive_tolerances = {0.5};
         plan.hierarchical_tolerances = {0.05};
         return plan;

@@ -36,7 +36,7 @@ struct BenchPlan {
     // (or the one nearest it) with the default estimator and solver.
     std::vector<int> comparison_sizes;
     int comparison_max_spp = 0;    // the path tracer's search for radiosity's image error stops here
-    int further_view_frames = 10;  // frames whose mean time is a further view's cost
+    int further_view_frames = 21;  // frames whose median time is a further view's cost
     // Adaptive subdivision and hierarchical radiosity at these --refine-tol values (default first or base
     // patches and solver), per scene.
     std::vector<double> adaptive_tolerances;

@@ -249,19 +249,24 @@ class SceneSweep {
         return block_relative_error(view_of(image), view_of(twin)) / std::sqrt(2.0);
     }
 
-    // The mean time of a frame from a new viewpoint, drawn into a framebuffer of `size`² that exists
-    // already (as a viewer's does) and waited for; each frame's camera has moved on a little.
+    // The median time of a frame from a new viewpoint, drawn into a framebuffer of `size`² that exists
+    // already (as a viewer's does) and waited for; each frame's camera has moved on a little. The median,
+    // since on a shared machine a few frames wait for other work.
     double further_view_seconds(const SceneImageRenderer& renderer, int size, int samples,
                                 PixelFormat format) const {
         const OffscreenTarget target(size, size, samples, format);
         Camera moved = camera_;
         renderer.draw_frame(moved, target);  // the first draw into a new framebuffer pays for setting it up
-        const auto start = std::chrono::steady_clock::now();
+        std::vector<double> seconds;
         for (int frame = 0; frame < plan_.further_view_frames; ++frame) {
             moved.eye += 0.01 * (camera_.target - camera_.eye);
+            const auto start = std::chrono::steady_clock::now();
             renderer.draw_frame(moved, target);
+            seconds.push_back(seconds_since(start));
         }
-        return seconds_since(start) / plan_.further_view_frames;
+        const auto middle = seconds.begin() + static_cast<std::ptrdiff_t>(seconds.size() / 2);
+        std::nth_element(seconds.begin(), middle, seconds.end());
+        return *middle;
     }
 
     void compare_with_path_tracer(const RadiosityPipeline& pipeline, const BenchRow& row) {
