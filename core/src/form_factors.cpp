@@ -52,12 +52,11 @@ constexpr std::uint64_t kEmitterSeedSalt = 0x5eed'e417'7e55'0001ull;
 
 RowFunction hemisphere_rows_with_emitters(const PatchMesh& patches, const RayScene& scene, int rays,
                                           const FormFactorOptions& options, std::vector<double>& covered) {
-    const std::vector<std::uint32_t> emitters =
-        analytic_emitter_columns(patches, options.emitting_surfaces, rays);
+    const std::vector<std::uint32_t> emitters = emitting_patches(patches, options.emitting_surfaces);
+    const int shadow_rays = emitter_shadow_rays(emitters.size(), rays);
+    if (shadow_rays == 0) return hemisphere_rows(patches, scene, rays, options.seed, covered);
     RowFunction hemisphere =
         hemisphere_rows(patches, scene, rays, options.seed, covered, column_flags(patches.size(), emitters));
-    if (emitters.empty()) return hemisphere;
-    const int shadow_rays = emitter_shadow_rays(emitters.size(), rays);
     return merged_rows(std::move(hemisphere), analytic_rows(patches, scene, shadow_rays,
                                                             options.seed ^ kEmitterSeedSalt, {}, emitters));
 }

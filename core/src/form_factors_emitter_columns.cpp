@@ -7,9 +7,8 @@
 
 namespace rad {
 
-std::vector<std::uint32_t> analytic_emitter_columns(const PatchMesh& patches,
-                                                    std::span<const std::uint32_t> emitting_surfaces,
-                                                    int hemisphere_rays) {
+std::vector<std::uint32_t> emitting_patches(const PatchMesh& patches,
+                                            std::span<const std::uint32_t> emitting_surfaces) {
     std::uint32_t surfaces = 0;
     for (const Patch& p : patches.patches) surfaces = std::max(surfaces, p.surface + 1);
     std::vector<std::uint8_t> emits(surfaces, 0);
@@ -20,7 +19,6 @@ std::vector<std::uint32_t> analytic_emitter_columns(const PatchMesh& patches,
     for (std::uint32_t p = 0; p < patches.size(); ++p) {
         if (emits[patches.patches[p].surface]) columns.push_back(p);
     }
-    if (emitter_shadow_rays(columns.size(), hemisphere_rays) == 0) columns.clear();
     return columns;
 }
 

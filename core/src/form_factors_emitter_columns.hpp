@@ -25,11 +25,10 @@ inline constexpr int kMinEmitterShadowRays = 16;
 // Shadow rays per (patch, emitter patch) pair, or 0 when the emitters' columns stay with the hemisphere.
 int emitter_shadow_rays(std::size_t emitter_patches, int hemisphere_rays);
 
-// The patches of the emitting surfaces, sorted: the columns to estimate analytically (empty when
-// emitter_shadow_rays is 0).
-std::vector<std::uint32_t> analytic_emitter_columns(const PatchMesh& patches,
-                                                    std::span<const std::uint32_t> emitting_surfaces,
-                                                    int hemisphere_rays);
+// The patches of the emitting surfaces, sorted: the columns to estimate analytically when
+// emitter_shadow_rays allows.
+std::vector<std::uint32_t> emitting_patches(const PatchMesh& patches,
+                                            std::span<const std::uint32_t> emitting_surfaces);
 
 // One flag per patch: 1 for the listed columns.
 std::vector<std::uint8_t> column_flags(std::size_t patch_count, std::span<const std::uint32_t> columns);

@@ -51,23 +51,31 @@ std::array<double, kMaxChannels> floors(const ImageView& reference, const Channe
     return floor;
 }
 
+// Calls visit(index) for each pixel of the block whose top-left pixel is (x0, y0) and returns the block's
+// pixel count (fewer at the right and bottom edges).
+template <typename Visit>
+double visit_block(const ImageView& reference, int x0, int y0, int size, Visit visit) {
+    const int x1 = std::min(x0 + size, reference.width), y1 = std::min(y0 + size, reference.height);
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            visit(static_cast<std::size_t>(y) * static_cast<std::size_t>(reference.width) +
+                  static_cast<std::size_t>(x));
+        }
+    }
+    return static_cast<double>(x1 - x0) * static_cast<double>(y1 - y0);
+}
+
 // The relative error of one block whose top-left pixel is (x0, y0), averaged over the channels.
 double block_error(const ImageView& image, const ImageView& reference, int x0, int y0, int size,
                    const Channels& channels, const std::array<double, kMaxChannels>& floor) {
     std::array<double, kMaxChannels> a{}, b{};
-    const int x1 = std::min(x0 + size, reference.width), y1 = std::min(y0 + size, reference.height);
-    for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) {
-            const auto index = static_cast<std::size_t>(y) * static_cast<std::size_t>(reference.width) +
-                               static_cast<std::size_t>(x);
-            const auto va = channels.of(image.pixels[index]), vb = channels.of(reference.pixels[index]);
-            for (int c = 0; c < channels.count; ++c) {
-                a[c] += va[c];
-                b[c] += vb[c];
-            }
+    const double n = visit_block(reference, x0, y0, size, [&](std::size_t index) {
+        const auto va = channels.of(image.pixels[index]), vb = channels.of(reference.pixels[index]);
+        for (int c = 0; c < channels.count; ++c) {
+            a[c] += va[c];
+            b[c] += vb[c];
         }
-    }
-    const double n = static_cast<double>(x1 - x0) * static_cast<double>(y1 - y0);
+    });
     double error = 0.0;
     for (int c = 0; c < channels.count; ++c) {
         const double denominator = std::max(b[c] / n, floor[c]);
@@ -80,22 +88,16 @@ double block_error(const ImageView& image, const ImageView& reference, int x0, i
 double block_noise(const ImageView& reference, std::span<const glm::vec3> standard_error, int x0, int y0,
                    int size, const Channels& channels, const std::array<double, kMaxChannels>& floor) {
     std::array<double, kMaxChannels> mean{}, variance{};
-    const int x1 = std::min(x0 + size, reference.width), y1 = std::min(y0 + size, reference.height);
-    for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) {
-            const auto index = static_cast<std::size_t>(y) * static_cast<std::size_t>(reference.width) +
-                               static_cast<std::size_t>(x);
-            const auto value = channels.of(reference.pixels[index]);
-            // Channels.of is linear with non-negative weights: applied to the standard errors it adds
-            // them as fully correlated.
-            const auto error = channels.of(standard_error[index]);
-            for (int c = 0; c < channels.count; ++c) {
-                mean[c] += value[c];
-                variance[c] += error[c] * error[c];
-            }
+    const double n = visit_block(reference, x0, y0, size, [&](std::size_t index) {
+        const auto value = channels.of(reference.pixels[index]);
+        // Channels.of is linear with non-negative weights: applied to the standard errors it adds them as
+        // fully correlated.
+        const auto error = channels.of(standard_error[index]);
+        for (int c = 0; c < channels.count; ++c) {
+            mean[c] += value[c];
+            variance[c] += error[c] * error[c];
         }
-    }
-    const double n = static_cast<double>(x1 - x0) * static_cast<double>(y1 - y0);
+    });
     const double mean_absolute_normal = std::sqrt(2.0 / std::numbers::pi);
     double noise = 0.0;
     for (int c = 0; c < channels.count; ++c) {
