@@ -3,8 +3,9 @@
 #include <exception>
 #include <iostream>
 
-#include "command_line.hpp"
-#include "rad/error.hpp"
+#include "cli/command_line.hpp"
+#include "cli/input_error_message.hpp"
+#include "rad/util/error.hpp"
 
 namespace {
 
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const rad::InputError& e) {
-        std::cerr << "radiosity: error: " << e.what() << '\n';
+        std::cerr << "radiosity: error: " << rad::input_error_message(e) << '\n';
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "radiosity: failed: " << e.what() << '\n';

@@ -5,7 +5,7 @@
 #include <initializer_list>
 #include <string>
 
-#include "rad/error.hpp"
+#include "rad/util/error.hpp"
 
 namespace rad::test {
 

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "rad/file_names.hpp"
+#include "rad/util/file_names.hpp"
 
 namespace rad::test {
 

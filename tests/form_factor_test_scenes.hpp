@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "rad/form_factor_matrix.hpp"
-#include "rad/patches.hpp"
-#include "rad/polygon_soup.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/polygon_soup.hpp"
+#include "rad/transport/uniform/form_factor_matrix.hpp"
 
 namespace rad::test {
 

@@ -10,9 +10,12 @@ namespace rad::test {
 
 namespace {
 
-std::filesystem::path actual_folder() { return std::filesystem::path(RAD_GOLDEN_ACTUAL_DIR); }
+std::filesystem::path actual_folder() {
+    return std::filesystem::path(RAD_GOLDEN_ACTUAL_DIR);
+}
 
-void keep_for_review(const std::string& name, const std::string& actual_path, const RadianceImage* difference) {
+void keep_for_review(const std::string& name, const std::string& actual_path,
+                     const RadianceImage* difference) {
     std::filesystem::create_directories(actual_folder());
     std::filesystem::copy_file(actual_path, actual_folder() / (name + ".png"),
                                std::filesystem::copy_options::overwrite_existing);
@@ -57,12 +60,13 @@ GoldenResult compare_with_image(const std::string& name, const std::string& gold
     }
     const double mean = sum / (3.0 * static_cast<double>(actual.pixels.size()));
     const double outlier_fraction = static_cast<double>(outliers) / static_cast<double>(actual.pixels.size());
-    result.passed = mean <= tolerance.max_mean_difference && outlier_fraction <= tolerance.max_outlier_fraction;
+    result.passed =
+        mean <= tolerance.max_mean_difference && outlier_fraction <= tolerance.max_outlier_fraction;
     std::ostringstream message;
-    message << name << ": mean difference " << mean * 255.0 << "/255 (allowed " << tolerance.max_mean_difference * 255.0
-            << "), " << outlier_fraction * 100.0 << " % of pixels off by more than "
-            << tolerance.outlier_difference * 255.0 << "/255 (allowed " << tolerance.max_outlier_fraction * 100.0
-            << " %)";
+    message << name << ": mean difference " << mean * 255.0 << "/255 (allowed "
+            << tolerance.max_mean_difference * 255.0 << "), " << outlier_fraction * 100.0
+            << " % of pixels off by more than " << tolerance.outlier_difference * 255.0 << "/255 (allowed "
+            << tolerance.max_outlier_fraction * 100.0 << " %)";
     if (!result.passed) {
         keep_for_review(name, actual_path, &difference);
         message << "; actual and difference images in " << actual_folder().string();

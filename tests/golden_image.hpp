@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "image_io.hpp"
+#include "io/image_io.hpp"
 
 namespace rad::test {
 

@@ -14,10 +14,10 @@
 #include <span>
 #include <vector>
 
-#include "form_factors_sampling.hpp"
-#include "rad/patches.hpp"
-#include "rad/path_tracer.hpp"
-#include "rad/scene.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/reference/path_tracer.hpp"
+#include "rad/scene/scene.hpp"
+#include "sampling/sampling.hpp"
 
 namespace rad::test {
 

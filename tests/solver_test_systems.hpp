@@ -12,8 +12,8 @@
 #include <span>
 #include <vector>
 
-#include "rad/radiosity_system.hpp"
-#include "rad/solver.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 
 namespace rad::test {
 
@@ -43,14 +43,14 @@ inline DenseMatrix expand(const FormFactorMatrix& m) {
 
 // The one-patch-per-face unit cube of analytic.md, faces in builtin:cube's order: top, bottom, left, right,
 // back, front. Opposite faces are (0, 1), (2, 3), (4, 5).
-inline RadiositySystem unit_cube_system(double reflectance, glm::dvec3 top_emission,
-                                        double f_opposite = 0.199825, double f_adjacent = 0.200044) {
+inline UniformTransport unit_cube_system(double reflectance, glm::dvec3 top_emission,
+                                         double f_opposite = 0.199825, double f_adjacent = 0.200044) {
     DenseMatrix f(6, std::vector<double>(6, f_adjacent));
     for (std::size_t i = 0; i < 6; ++i) {
         f[i][i] = 0.0;
         f[i][i ^ 1] = f_opposite;
     }
-    RadiositySystem system;
+    UniformTransport system;
     system.area.assign(6, 1.0);
     system.reflectance.assign(6, glm::dvec3(reflectance));
     system.emission.assign(6, glm::dvec3(0.0));
@@ -83,7 +83,7 @@ struct RandomSystemOptions {
 // held in float, so the float matrix F = G / A is reciprocal to the last bit. G = D K D for a random sparse
 // symmetric K, with D found by symmetric Sinkhorn scaling so that the rows of F sum to their targets.
 // Reflectance and emission are left for the caller (all zero here).
-inline RadiositySystem random_reciprocal_system(const RandomSystemOptions& options) {
+inline UniformTransport random_reciprocal_system(const RandomSystemOptions& options) {
     const std::size_t n = options.patches;
     Uniform uniform(options.seed);
     DenseMatrix k(n, std::vector<double>(n, 0.0));
@@ -93,7 +93,7 @@ inline RadiositySystem random_reciprocal_system(const RandomSystemOptions& optio
             if (j == i + 1 || uniform() < options.density) k[i][j] = k[j][i] = 0.1 + uniform();
         }
     }
-    RadiositySystem system;
+    UniformTransport system;
     std::vector<double> target(n);
     for (std::size_t i = 0; i < n; ++i) {
         system.area.push_back(std::ldexp(1.0, static_cast<int>(uniform() * 4.0) - 1));  // 0.5, 1, 2 or 4

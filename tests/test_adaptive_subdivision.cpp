@@ -14,14 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "adaptive_gradient.hpp"
-#include "adaptive_shadow.hpp"
 #include "expect_input_error.hpp"
-#include "form_factors_hemisphere.hpp"
 #include "point_reference.hpp"
-#include "rad/adaptive_subdivision.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/embree_scene.hpp"
+#include "rad/ray/ray_scene.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/adaptive/adaptive_subdivision.hpp"
+#include "transport/adaptive/adaptive_gradient.hpp"
+#include "transport/adaptive/adaptive_shadow.hpp"
+#include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad {
 namespace {
@@ -57,8 +57,8 @@ FormFactorOptions program_options(const Scene& scene, FormFactorOptions ff) {
 Solution solve_uniform(const Scene& scene, double patch_size, const FormFactorOptions& ff = {}) {
     const auto start = std::chrono::steady_clock::now();
     Solution out{build_patches(scene, MeshingOptions{patch_size}), {}, 0.0};
-    const RadiositySystem system =
-        make_radiosity_system(scene, out.mesh, compute_form_factors(out.mesh, program_options(scene, ff)));
+    const UniformTransport system =
+        make_uniform_transport(scene, out.mesh, compute_form_factors(out.mesh, program_options(scene, ff)));
     const auto solver = make_solver(SolverMethod::conjugate_gradient, system, SolverOptions{});
     while (!solver->report().finished()) solver->step();
     out.radiosity.assign(solver->solution().begin(), solver->solution().end());

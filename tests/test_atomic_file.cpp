@@ -5,7 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "rad/atomic_file.hpp"
+#include "rad/io/atomic_file.hpp"
 #include "test_support.hpp"
 
 namespace rad {

@@ -4,11 +4,11 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/error.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/patches.hpp"
-#include "rad/polygon.hpp"
+#include "rad/geometry/polygon.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/util/error.hpp"
 
 namespace rad {
 namespace {
@@ -122,7 +122,8 @@ TEST(TestScenes, WhiteRoomIsTheCornellBoxClosedAndWhite) {
     const Scene room = make_white_room();
     const Scene cornell = make_cornell_box();
     ASSERT_EQ(room.surfaces.size(), cornell.surfaces.size() + 1);
-    const double front_wall = 0.5 * (552.8 + 556.0) * 548.8;  // a trapezoid: the left wall leans out by 3.2 mm
+    const double front_wall =
+        0.5 * (552.8 + 556.0) * 548.8;  // a trapezoid: the left wall leans out by 3.2 mm
     EXPECT_NEAR(total_area(room), total_area(cornell) + front_wall, 1e-6 * total_area(room));
     for (const Surface& s : room.surfaces) {
         EXPECT_EQ(s.material.reflectance, s.material.emits() ? glm::dvec3(0.78) : glm::dvec3(0.95)) << s.name;

@@ -11,12 +11,12 @@
 #include <numbers>
 #include <utility>
 
-#include "patch_boundary.hpp"
-#include "patch_gradients.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/element_tree.hpp"
-#include "rad/polygon_soup.hpp"
-#include "rad/vertex_colours.hpp"
+#include "display/patch_gradients.hpp"
+#include "mesh/patch_boundary.hpp"
+#include "rad/display/display_mesh.hpp"
+#include "rad/mesh/element_tree.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/scene/polygon_soup.hpp"
 
 namespace rad {
 namespace {

@@ -5,9 +5,9 @@
 #include <glm/geometric.hpp>
 #include <set>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/element_tree.hpp"
-#include "rad/patches.hpp"
+#include "rad/mesh/element_tree.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/builtin_scenes.hpp"
 
 namespace rad {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "rad/fly_camera.hpp"
+#include "rad/camera/fly_camera.hpp"
 
 namespace rad {
 namespace {

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 
 namespace rad {
 namespace {

@@ -3,8 +3,8 @@
 #include <tbb/global_control.h>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 
 namespace rad {
 namespace {

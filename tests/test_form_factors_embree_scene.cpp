@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/embree_scene.hpp"
+#include "rad/ray/ray_scene.hpp"
 
 namespace rad {
 namespace {

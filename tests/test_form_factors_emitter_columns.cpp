@@ -6,9 +6,9 @@
 #include <cstdio>
 
 #include "form_factor_test_scenes.hpp"
-#include "form_factors_emitter_columns.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "transport/uniform/form_factors_emitter_columns.hpp"
 
 namespace rad {
 namespace {

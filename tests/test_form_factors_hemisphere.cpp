@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 
 namespace rad {
 namespace {

@@ -1,13 +1,15 @@
 // The memory estimate stops a pass that would not fit, naming a --patch-size that does.
 #include <gtest/gtest.h>
 
+#include "cli/input_error_message.hpp"
+
 #include <regex>
 
 #include "form_factor_test_scenes.hpp"
-#include "form_factors_memory.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/error.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/util/error.hpp"
+#include "transport/uniform/form_factors_memory.hpp"
 
 namespace rad {
 namespace {
@@ -41,11 +43,13 @@ TEST(MemoryBudget, OverBudgetNamesACoarserPatchSizeThatFits) {
     try {
         compute_form_factors(mesh, options);
         FAIL() << "no error for a budget of a sixteenth of the matrix";
-    } catch (const InputError& e) {
-        const std::string message = e.what();
+    } catch (const MemoryBudgetError& e) {
+        EXPECT_EQ(e.patches, mesh.size());
+        EXPECT_GT(e.needed_bytes, e.budget_bytes);
+        const std::string message = input_error_message(e);
         EXPECT_NE(message.find("form factors need about"), std::string::npos) << message;
         EXPECT_NE(message.find(std::to_string(mesh.size()) + " patches"), std::string::npos) << message;
-        EXPECT_NE(message.find("(--max-memory)"), std::string::npos) << message;
+        EXPECT_EQ(message.find("--max-memory: "), 0u) << message;
         std::smatch match;
         ASSERT_TRUE(std::regex_search(message, match, std::regex("use --patch-size ([0-9.]+) or larger")))
             << message;
@@ -67,10 +71,10 @@ TEST(MemoryBudget, WithoutTheSceneTheSuggestionScalesTheLongestEdge) {
     try {
         compute_form_factors(mesh, options);
         FAIL();
-    } catch (const InputError& e) {
+    } catch (const MemoryBudgetError& e) {
         // 128 patches to 32: twice the edge, with a 5 % margin.
-        EXPECT_NE(std::string(e.what()).find("use --patch-size 0.263 or larger"), std::string::npos)
-            << e.what();
+        EXPECT_NE(input_error_message(e).find("use --patch-size 0.263 or larger"), std::string::npos)
+            << input_error_message(e);
     }
 }
 
@@ -81,8 +85,9 @@ TEST(MemoryBudget, ABudgetTooSmallForOnePatchAsksForMore) {
     try {
         compute_form_factors(mesh, options);
         FAIL();
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("raise --max-memory"), std::string::npos) << e.what();
+    } catch (const MemoryBudgetError& e) {
+        EXPECT_EQ(e.coarser_patch_size, 0.0);
+        EXPECT_NE(input_error_message(e).find("raise --max-memory"), std::string::npos) << e.what();
     }
 }
 
@@ -93,8 +98,9 @@ TEST(Options, NegativeRaysAreAnInputError) {
     try {
         compute_form_factors(mesh, options);
         FAIL();
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("--rays"), std::string::npos);
+    } catch (const SettingError& e) {
+        EXPECT_EQ(e.setting(), "rays");
+        EXPECT_EQ(input_error_message(e).find("--rays: "), 0u) << input_error_message(e);
     }
 }
 

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/point_polygon_factor.hpp"
+#include "rad/geometry/point_polygon_factor.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 
 namespace rad {
 namespace {

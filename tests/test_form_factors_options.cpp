@@ -5,8 +5,8 @@
 #include <sstream>
 #include <thread>
 
-#include "form_factor_options.hpp"
-#include "progress_bar.hpp"
+#include "cli/progress_bar.hpp"
+#include "pipeline/form_factor_options.hpp"
 
 namespace rad {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "rad/point_polygon_factor.hpp"
+#include "rad/geometry/point_polygon_factor.hpp"
 
 namespace rad {
 namespace {

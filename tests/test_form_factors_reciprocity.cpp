@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 
 namespace rad {
 namespace {

@@ -12,7 +12,9 @@ namespace {
 
 const std::string kGolden = "cornell_256";
 
-std::filesystem::path golden_path() { return std::filesystem::path(RAD_GOLDEN_DIR) / (kGolden + ".png"); }
+std::filesystem::path golden_path() {
+    return std::filesystem::path(RAD_GOLDEN_DIR) / (kGolden + ".png");
+}
 
 TEST(GoldenImage, TheGoldenImagePassesAgainstItself) {
     const test::GoldenResult result = test::compare_with_golden(kGolden, golden_path().string());

@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/radiosity_system.hpp"
-#include "rad/scene_loader.hpp"
-#include "rad/solver.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 
 namespace rad {
 namespace {
@@ -114,7 +114,7 @@ TEST(Coplanar, ALightAcrossTwoSurfacesIsMovedOnce) {
 struct Solution {
     Scene scene;
     PatchMesh mesh;
-    RadiositySystem system;
+    UniformTransport system;
     std::vector<glm::dvec3> b;
 };
 
@@ -122,7 +122,7 @@ Solution solve(const std::string& path) {
     Solution s;
     s.scene = load_scene(asset(path));
     s.mesh = test::mesh(s.scene, 0.1);
-    s.system = make_radiosity_system(s.scene, s.mesh, compute_form_factors(s.mesh, FormFactorOptions{}));
+    s.system = make_uniform_transport(s.scene, s.mesh, compute_form_factors(s.mesh, FormFactorOptions{}));
     auto solver = make_solver(SolverMethod::direct, s.system, SolverOptions{});
     EXPECT_TRUE(solver->step().converged());
     s.b.assign(solver->solution().begin(), solver->solution().end());

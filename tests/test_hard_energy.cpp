@@ -12,14 +12,14 @@
 #include <vector>
 
 #include "form_factor_test_scenes.hpp"
-#include "form_factors_analytic.hpp"
-#include "rad/embree_scene.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/radiosity_system.hpp"
-#include "rad/scene_loader.hpp"
-#include "rad/solver.hpp"
+#include "rad/ray/ray_scene.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 #include "solver_test_systems.hpp"
 #include "test_support.hpp"
+#include "transport/uniform/form_factors_analytic.hpp"
 
 namespace rad {
 namespace {
@@ -78,7 +78,7 @@ TEST(OpenScene, TheDefaultEstimatorReportsTheEscapeToo) {
     const nlohmann::json doc = solve_json({asset("open_plates.obj"), "--patch-size", "0.125"});
     const auto& stats = doc.at("stats");
     EXPECT_TRUE(stats.at("converged").get<bool>());
-    EXPECT_GT(stats.at("form_factor_report").at("escaped_ray_fraction").get<double>(), 0.7);
+    EXPECT_GT(stats.at("transport").at("escaped_ray_fraction").get<double>(), 0.7);
     const auto& energy = stats.at("energy");
     const double emitted = energy.at("emitted").at(0).get<double>();
     const double escaped = energy.at("escaped").at(0).get<double>();
@@ -93,7 +93,7 @@ TEST(NoEmitter, EveryMethodGivesZeroWithoutDividingByZero) {
     ASSERT_EQ(scene.warnings.size(), 1u);
     EXPECT_NE(scene.warnings[0].find("no material emits light"), std::string::npos) << scene.warnings[0];
     const PatchMesh mesh = test::mesh(scene, 0.25);
-    const RadiositySystem system = make_radiosity_system(scene, mesh, compute_form_factors(mesh, {}));
+    const UniformTransport system = make_uniform_transport(scene, mesh, compute_form_factors(mesh, {}));
     for (SolverMethod method : all_solver_methods()) {
         SCOPED_TRACE(std::string(solver_method_name(method)));
         auto solver = make_solver(method, system, SolverOptions{});
@@ -129,8 +129,8 @@ TEST(NoEmitter, TheCommandWarnsAndWritesZeros) {
 TEST(BrightAndDark, NoOverflowNoUnderflowAndLinearInTheEmission) {
     const Scene scene = load_scene(asset("bright_dark.obj"));
     const PatchMesh mesh = test::mesh(scene, 0.25);
-    const RadiositySystem bright = make_radiosity_system(scene, mesh, compute_form_factors(mesh, {}));
-    RadiositySystem unit = bright;
+    const UniformTransport bright = make_uniform_transport(scene, mesh, compute_form_factors(mesh, {}));
+    UniformTransport unit = bright;
     for (glm::dvec3& e : unit.emission) e /= 1e6;
     for (SolverMethod method : all_solver_methods()) {
         SCOPED_TRACE(std::string(solver_method_name(method)));
@@ -162,10 +162,10 @@ TEST(BrightAndDark, NoOverflowNoUnderflowAndLinearInTheEmission) {
 TEST(BrightAndDark, ExtremeValuesNeverBecomeNaN) {
     const Scene scene = load_scene(asset("bright_dark.obj"));
     const PatchMesh mesh = test::mesh(scene, 0.5);
-    const RadiositySystem base = make_radiosity_system(scene, mesh, compute_form_factors(mesh, {}));
+    const UniformTransport base = make_uniform_transport(scene, mesh, compute_form_factors(mesh, {}));
     for (double scale : {1e100, 1e-100, 1e290, 1e-290}) {
         for (double dark : {1e-300, 0.0}) {
-            RadiositySystem system = base;
+            UniformTransport system = base;
             for (glm::dvec3& e : system.emission) e *= scale;
             for (glm::dvec3& r : system.reflectance) {
                 if (r.x < 1e-3) r = glm::dvec3(dark);
@@ -205,7 +205,7 @@ std::vector<std::vector<double>> double_rows(const PatchMesh& mesh) {
 }
 
 // (I − ρF) B = E for one channel by Gaussian elimination with partial pivoting, all in double.
-std::vector<double> solve_in_double(std::vector<std::vector<double>> f, const RadiositySystem& system,
+std::vector<double> solve_in_double(std::vector<std::vector<double>> f, const UniformTransport& system,
                                     int c) {
     const std::size_t n = f.size();
     std::vector<double> b(n);
@@ -240,7 +240,7 @@ void expect_float_storage_agrees(const std::string& name, double patch_size) {
     const PatchMesh mesh = test::mesh(scene, patch_size);
     FormFactorOptions options;
     options.method = FormFactorMethod::analytic;
-    const RadiositySystem system = make_radiosity_system(scene, mesh, compute_form_factors(mesh, options));
+    const UniformTransport system = make_uniform_transport(scene, mesh, compute_form_factors(mesh, options));
     std::vector<std::vector<double>> f = double_rows(mesh);
     // The stored matrix is the double one rounded to float; rows of partly covered patches are then those of
     // their exposed part (divided by the exposed share after rounding, so within a float step or two).

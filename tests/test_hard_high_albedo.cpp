@@ -12,8 +12,8 @@
 #include <string>
 #include <tuple>
 
-#include "rad/form_factors.hpp"
-#include "rad/scene_loader.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 #include "solver_test_systems.hpp"
 #include "test_support.hpp"
 
@@ -28,7 +28,7 @@ std::string furnace_path(double rho) {
 struct Furnace {
     Scene scene;
     PatchMesh patches;
-    RadiositySystem system;
+    UniformTransport system;
 };
 
 // The furnace at 4 x 4 patches a face (96), hemisphere form factors (the default estimator), no row scaling.
@@ -40,7 +40,7 @@ const Furnace& furnace(double rho) {
     f.scene = load_scene(furnace_path(rho));
     f.patches = build_patches(f.scene, MeshingOptions{.patch_size = 0.25});
     f.system =
-        make_radiosity_system(f.scene, f.patches, compute_form_factors(f.patches, FormFactorOptions{}));
+        make_uniform_transport(f.scene, f.patches, compute_form_factors(f.patches, FormFactorOptions{}));
     return cache.emplace(rho, std::move(f)).first->second;
 }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "expect_input_error.hpp"
-#include "rad/scene_loader.hpp"
+#include "rad/scene/scene_loader.hpp"
 #include "test_support.hpp"
 
 namespace rad {

@@ -9,10 +9,10 @@
 #include <string>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/radiosity_system.hpp"
-#include "rad/scene_loader.hpp"
-#include "rad/solver.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 
 namespace rad {
 namespace {
@@ -106,7 +106,7 @@ TEST_P(BoxOnFloor, NoLightUnderTheBoxOrThroughItsSeams) {
         EXPECT_EQ(w.find("lies in the plane"), std::string::npos) << w;
     const PatchMesh mesh = test::mesh(scene, 0.25);
     ASSERT_EQ(scene.surfaces[0].name, "floor");
-    const RadiositySystem system = make_radiosity_system(scene, mesh, form_factors(mesh, GetParam()));
+    const UniformTransport system = make_uniform_transport(scene, mesh, form_factors(mesh, GetParam()));
     auto solver = make_solver(SolverMethod::direct, system, SolverOptions{});
     ASSERT_TRUE(solver->step().converged());
     const auto b = solver->solution();

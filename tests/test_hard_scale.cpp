@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "rad/form_factors.hpp"
-#include "rad/radiosity_system.hpp"
-#include "rad/scene_loader.hpp"
-#include "rad/solver.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 
 namespace rad {
 namespace {
@@ -29,7 +29,7 @@ std::vector<glm::dvec3> solve_scaled(double scale, FormFactorMethod method, std:
     if (patches) *patches = mesh.size();
     FormFactorOptions options;
     options.method = method;
-    const RadiositySystem system = make_radiosity_system(scene, mesh, compute_form_factors(mesh, options));
+    const UniformTransport system = make_uniform_transport(scene, mesh, compute_form_factors(mesh, options));
     auto solver = make_solver(SolverMethod::direct, system, SolverOptions{});
     EXPECT_TRUE(solver->step().converged());
     return {solver->solution().begin(), solver->solution().end()};

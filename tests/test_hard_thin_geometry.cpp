@@ -10,12 +10,12 @@
 #include <vector>
 
 #include "form_factor_test_scenes.hpp"
-#include "form_factors_quadrature.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/point_polygon_factor.hpp"
-#include "rad/radiosity_system.hpp"
-#include "rad/scene_loader.hpp"
-#include "rad/solver.hpp"
+#include "geometry/quadrature.hpp"
+#include "rad/geometry/point_polygon_factor.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 #include "solver_test_systems.hpp"
 
 namespace rad {
@@ -64,7 +64,7 @@ TEST_P(NearPlates, AtATenThousandthOfTheirSizeFIsNearlyOneAndNotMore) {
         EXPECT_LE(largest_row_sum(f), 1.0 + 1e-6);  // float rounding of the row's entries
 
         // The lower plate emits E = 1 and both reflect 0.5: B_lower = E / (1 − (ρF)²) → 4/3 as F → 1.
-        const RadiositySystem system = make_radiosity_system(scene, mesh, f);
+        const UniformTransport system = make_uniform_transport(scene, mesh, f);
         auto solver = make_solver(SolverMethod::direct, system, SolverOptions{});
         ASSERT_TRUE(solver->step().converged());
         for (const glm::dvec3& b : solver->solution()) {
@@ -125,7 +125,7 @@ struct Solved {
     bool analytic = false;
     Scene scene;
     PatchMesh mesh;
-    RadiositySystem system;
+    UniformTransport system;
     // The solution of every solver, in all_solver_methods() order.
     std::vector<std::vector<glm::dvec3>> by_method;
 };
@@ -135,7 +135,7 @@ Solved solve_every_way(const std::string& name, double patch_size, FormFactorMet
     s.analytic = method == FormFactorMethod::analytic;
     s.scene = load_scene(asset(name));
     s.mesh = test::mesh(s.scene, patch_size);
-    s.system = make_radiosity_system(s.scene, s.mesh, form_factors(s.mesh, method));
+    s.system = make_uniform_transport(s.scene, s.mesh, form_factors(s.mesh, method));
     for (SolverMethod m : all_solver_methods()) {
         auto solver = make_solver(m, s.system, SolverOptions{});
         const StepReport report = test::run_to_end(*solver);

@@ -8,18 +8,20 @@
 #include <numeric>
 
 #include "form_factor_test_scenes.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/error.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/hierarchical_radiosity.hpp"
-#include "rad/patches.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/hierarchical/hierarchical_radiosity.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
+#include "rad/util/error.hpp"
 #include "solver_test_systems.hpp"
 
 namespace rad {
 namespace {
 
 struct Solved {
-    std::unique_ptr<HierarchicalSystem> system;
+    std::unique_ptr<HierarchicalTransport> transport;
     HierarchicalReport report;
     std::vector<glm::dvec3> radiosity;  // per leaf
 };
@@ -27,10 +29,11 @@ struct Solved {
 Solved solve_hierarchical(const Scene& scene, double base_size, const HierarchicalOptions& options) {
     Solved out;
     const PatchMesh base = build_patches(scene, MeshingOptions{base_size});
-    out.system = build_hierarchical_system(scene, base, options, &out.report);
+    out.transport = make_hierarchical_transport(scene, base, options);
+    out.report = out.transport->hierarchical_report();
     SolverOptions solver_options;
     solver_options.tolerance = 1e-7;
-    const auto solver = make_hierarchical_solver(*out.system, solver_options);
+    const auto solver = make_solver(SolverMethod::jacobi, *out.transport, solver_options);
     test::run_to_end(*solver);
     out.radiosity.assign(solver->solution().begin(), solver->solution().end());
     return out;
@@ -63,8 +66,8 @@ TEST(Hierarchical, FurnaceGivesEOverOneMinusRho) {
         for (std::size_t k = 0; k < h.radiosity.size(); ++k) {
             lo = std::min(lo, h.radiosity[k].x);
             hi = std::max(hi, h.radiosity[k].x);
-            sum += h.system->leaf_system.area[k] * h.radiosity[k].x;
-            area += h.system->leaf_system.area[k];
+            sum += h.transport->area[k] * h.radiosity[k].x;
+            area += h.transport->area[k];
         }
         std::printf("furnace, tolerance %.3g: %zu leaves, %zu links: B in [%.5f, %.5f], mean %.5f\n",
                     tolerance, h.report.leaves, h.report.links, lo, hi, sum / area);
@@ -82,7 +85,7 @@ TEST(Hierarchical, CornellAgainstAFineUniformSolve) {
     // The reference: uniform patches of extent / 48 with analytic form factors, solved directly.
     const PatchMesh fine = build_patches(scene, MeshingOptions{extent / 32.0});
     FormFactorOptions ff;
-    RadiositySystem reference_system = make_radiosity_system(scene, fine, compute_form_factors(fine, ff));
+    UniformTransport reference_system = make_uniform_transport(scene, fine, compute_form_factors(fine, ff));
     SolverOptions so;
     so.tolerance = 1e-8;
     auto reference_solver = make_solver(SolverMethod::gauss_seidel, reference_system, so);
@@ -97,9 +100,9 @@ TEST(Hierarchical, CornellAgainstAFineUniformSolve) {
         const Solved h = solve_hierarchical(scene, extent / 4.0, options);
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const std::vector<glm::dvec3> power =
-            surface_power(h.system->leaf_patches,
-                          whole_patch_radiosity(h.system->leaf_system, h.system->leaf_patches, h.radiosity));
+        const std::vector<glm::dvec3> power = surface_power(
+            h.transport->system().leaf_patches,
+            whole_patch_radiosity(*h.transport, h.transport->system().leaf_patches, h.radiosity));
         double worst = 0.0;
         for (std::size_t s = 0; s < power.size(); ++s) {
             const double ref = reference[s].x + reference[s].y + reference[s].z;
@@ -153,7 +156,7 @@ TEST(Hierarchical, AHighAlbedoClosedRoomKeepsItsEnergy) {
     HierarchicalOptions options;
     options.tolerance = 0.01;
     const Solved h = solve_hierarchical(scene, 4.0 * default_patch_size(scene), options);
-    const EnergyBalance balance = hierarchical_energy_balance(*h.system, h.radiosity);
+    const EnergyBalance balance = energy_balance(*h.transport, h.radiosity);
     const double emitted = balance.emitted.x + balance.emitted.y + balance.emitted.z;
     const double absorbed = balance.absorbed.x + balance.absorbed.y + balance.absorbed.z;
     const double escaped = balance.escaped.x + balance.escaped.y + balance.escaped.z;

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "rad/image_error.hpp"
+#include "rad/reference/image_error.hpp"
 
 namespace rad {
 namespace {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "image_io.hpp"
-#include "rad/error.hpp"
+#include "io/image_io.hpp"
+#include "rad/util/error.hpp"
 #include "test_support.hpp"
 
 namespace rad {

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "expect_input_error.hpp"
-#include "rad/scene_loader.hpp"
+#include "rad/scene/scene_loader.hpp"
 #include "test_support.hpp"
 
 namespace rad {

@@ -2,22 +2,25 @@
 // the counts are the ones worked out by hand.
 #include <gtest/gtest.h>
 
+#include "cli/input_error_message.hpp"
+
 #include <glm/geometric.hpp>
 #include <map>
 #include <set>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/error.hpp"
-#include "rad/patches.hpp"
-#include "rad/polygon.hpp"
-#include "rad/polygon_soup.hpp"
+#include "rad/geometry/polygon.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/scene/polygon_soup.hpp"
+#include "rad/util/error.hpp"
 
 namespace rad {
 namespace {
 
 double patch_area_sum(const PatchMesh& mesh, std::uint32_t surface) {
     double sum = 0.0;
-    for (auto p = mesh.surface_begin[surface]; p < mesh.surface_begin[surface + 1]; ++p) sum += mesh.patches[p].area;
+    for (auto p = mesh.surface_begin[surface]; p < mesh.surface_begin[surface + 1]; ++p)
+        sum += mesh.patches[p].area;
     return sum;
 }
 
@@ -118,9 +121,9 @@ TEST(Meshing, TriangleIsCutIntoNSquaredTriangles) {
 
 TEST(Meshing, MixedQuadsAndTrianglesConform) {
     // A long quad beside a triangle sharing its right edge, and a convex pentagon fanned around its centre.
-    const Scene scene = soup_scene({{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {0, 1, 0}, {4, 0.5, 0}, {0, 2, 0}, {1.5, 2.6, 0},
-                                    {3, 2, 0}},
-                                   {{0, 1, 2, 3}, {1, 4, 2}, {3, 2, 7, 6, 5}});
+    const Scene scene = soup_scene(
+        {{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {0, 1, 0}, {4, 0.5, 0}, {0, 2, 0}, {1.5, 2.6, 0}, {3, 2, 0}},
+        {{0, 1, 2, 3}, {1, 4, 2}, {3, 2, 7, 6, 5}});
     for (double size : {1.0, 0.3, 0.17}) expect_well_meshed(scene, size);
 }
 
@@ -131,8 +134,9 @@ TEST(Meshing, TooManyPatchesNamesTheOptionAndASizeThatFits) {
     try {
         build_patches(make_cube(), options);
         FAIL() << "expected an InputError";
-    } catch (const InputError& e) {
-        const std::string what = e.what();
+    } catch (const SettingError& e) {
+        EXPECT_EQ(e.setting(), "patch_size");
+        const std::string what = input_error_message(e);
         EXPECT_NE(what.find("--patch-size"), std::string::npos) << what;
         // The suggested size must actually fit.
         const double suggested = std::stod(what.substr(what.rfind("--patch-size ") + 13));

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "expect_input_error.hpp"
-#include "rad/error.hpp"
-#include "rad/scene_loader.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/util/error.hpp"
 #include "test_support.hpp"
 
 namespace rad {

@@ -13,12 +13,12 @@
 #include <numbers>
 #include <vector>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/image_error.hpp"
-#include "rad/path_tracer.hpp"
-#include "rad/radiosity_system.hpp"
-#include "rad/solver.hpp"
+#include "rad/reference/image_error.hpp"
+#include "rad/reference/path_tracer.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 
 namespace rad {
 namespace {
@@ -278,8 +278,8 @@ TEST(PathTracer, AgreesWithTheRadiositySolutionOfTheCornellBox) {
     const Meshed cornell = mesh(make_cornell_box(), 70.0);
     FormFactorOptions ff;
     ff.rays = 16384;
-    const RadiositySystem system =
-        make_radiosity_system(cornell.scene, cornell.patches, compute_form_factors(cornell.patches, ff));
+    const UniformTransport system =
+        make_uniform_transport(cornell.scene, cornell.patches, compute_form_factors(cornell.patches, ff));
     auto solver = make_solver(SolverMethod::direct, system, SolverOptions{});
     ASSERT_TRUE(solver->step().converged());
     // The solution is the radiosity of each patch's exposed part; the path tracer averages over the whole

@@ -5,8 +5,8 @@
 #include <cstring>
 
 #include "expect_input_error.hpp"
-#include "rad/error.hpp"
-#include "rad/scene_loader.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/util/error.hpp"
 #include "test_support.hpp"
 
 namespace rad {
@@ -92,10 +92,12 @@ TEST(PlyLoader, BadInputIsRefusedWithFileAndLine) {
     // A forged count is refused before anything is allocated for it.
     std::string forged = kFaceColourHeader;
     forged.replace(forged.find("element face 2"), 14, "element face 2000000000");
-    expect_ply_error(dir.write("c.ply", forged + kSquare + good_faces), {"c.ply", "2000000000 faces", "limit"});
+    expect_ply_error(dir.write("c.ply", forged + kSquare + good_faces),
+                     {"c.ply", "2000000000 faces", "limit"});
     // Under the limit, but more than the file's bytes can hold.
     forged.replace(forged.find("2000000000"), 10, "5000000");
-    expect_ply_error(dir.write("c2.ply", forged + kSquare + good_faces), {"c2.ply", "5000000 'face'", "bytes"});
+    expect_ply_error(dir.write("c2.ply", forged + kSquare + good_faces),
+                     {"c2.ply", "5000000 'face'", "bytes"});
     expect_ply_error(dir.write("d.ply", kFaceColourHeader + "0 0 0\n1 0 0\n1 nan 0\n0 1 0\n" + good_faces),
                      {"d.ply:15:", "not finite"});
     expect_ply_error(dir.write("e.ply", kFaceColourHeader + "0 0 0\n1 0 0\n1 x 0\n0 1 0\n" + good_faces),

@@ -6,14 +6,16 @@
 
 #include <glm/geometric.hpp>
 
-#include "rad/polygon.hpp"
+#include "rad/geometry/polygon.hpp"
 
 namespace rad {
 namespace {
 
-double triangles_area(const std::vector<glm::dvec3>& poly, const std::vector<std::array<std::size_t, 3>>& tris) {
+double triangles_area(const std::vector<glm::dvec3>& poly,
+                      const std::vector<std::array<std::size_t, 3>>& tris) {
     double area = 0.0;
-    for (const auto& t : tris) area += polygon_area(std::vector<glm::dvec3>{poly[t[0]], poly[t[1]], poly[t[2]]});
+    for (const auto& t : tris)
+        area += polygon_area(std::vector<glm::dvec3>{poly[t[0]], poly[t[1]], poly[t[2]]});
     return area;
 }
 

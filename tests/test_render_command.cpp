@@ -10,7 +10,7 @@
 
 #include "export_readers.hpp"
 #include "golden_image.hpp"
-#include "image_io.hpp"
+#include "io/image_io.hpp"
 #include "test_support.hpp"
 
 namespace rad {

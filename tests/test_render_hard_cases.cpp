@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "image_io.hpp"
-#include "rad/camera_view.hpp"
-#include "rad/scene_loader.hpp"
+#include "io/image_io.hpp"
+#include "rad/camera/camera_view.hpp"
+#include "rad/scene/scene_loader.hpp"
 #include "test_support.hpp"
 
 namespace rad {

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "image_io.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/image_error.hpp"
-#include "rad/path_tracer.hpp"
+#include "io/image_io.hpp"
+#include "rad/reference/image_error.hpp"
+#include "rad/reference/path_tracer.hpp"
+#include "rad/scene/builtin_scenes.hpp"
 #include "test_support.hpp"
 
 namespace rad {

@@ -2,9 +2,9 @@
 #include <gtest/gtest.h>
 
 #include "gl/headless_context.hpp"
-#include "rad/camera_view.hpp"
-#include "radiosity_pipeline.hpp"
-#include "scene_image_renderer.hpp"
+#include "gl/scene_image_renderer.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
+#include "rad/camera/camera_view.hpp"
 
 namespace rad {
 namespace {

@@ -6,7 +6,7 @@
 #include "gl/headless_context.hpp"
 #include "gl/offscreen_target.hpp"
 #include "gl/renderer.hpp"
-#include "rad/srgb.hpp"
+#include "rad/util/srgb.hpp"
 
 namespace rad {
 namespace {

@@ -15,10 +15,10 @@
 #include <set>
 
 #include "export_readers.hpp"
-#include "rad/error.hpp"
-#include "rad/scene_export.hpp"
-#include "rad/srgb.hpp"
-#include "radiosity_pipeline.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
+#include "rad/io/scene_export.hpp"
+#include "rad/util/error.hpp"
+#include "rad/util/srgb.hpp"
 #include "test_support.hpp"
 
 namespace rad {

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "expect_input_error.hpp"
-#include "obj_syntax.hpp"
-#include "ply_check.hpp"
+#include "scene/obj/obj_syntax.hpp"
+#include "scene/ply/ply_check.hpp"
 
 namespace rad {
 namespace {

@@ -127,7 +127,8 @@ TEST(SolveCommand, HierarchicalSolvesTheCornellBox) {
     const auto hierarchical =
         run_radiosity({"solve", "--subdivision", "hierarchical", "--json", hierarchical_out});
     ASSERT_EQ(hierarchical.status, 0) << hierarchical.err;
-    EXPECT_NE(hierarchical.out.find("hierarchy: 197 base patches"), std::string::npos) << hierarchical.out;
+    EXPECT_NE(hierarchical.out.find("transport: hierarchical"), std::string::npos) << hierarchical.out;
+    EXPECT_NE(hierarchical.out.find("base_patches 197"), std::string::npos) << hierarchical.out;
     auto power = [](const json& doc) {
         double sum = 0.0;
         for (const json& p : doc.at("patches")) {
@@ -138,6 +139,15 @@ TEST(SolveCommand, HierarchicalSolvesTheCornellBox) {
     };
     const json u = read_json(uniform_out), h = read_json(hierarchical_out);
     EXPECT_GT(h.at("patches").size(), 197u);
+    // "nonzeros" counts the links, as the transport reports them (it was 0: an empty form-factor matrix).
+    const json& transport = h.at("stats").at("transport");
+    EXPECT_EQ(transport.at("kind"), "hierarchical");
+    EXPECT_EQ(transport.at("interaction_name"), "links");
+    EXPECT_EQ(transport.at("elements").get<std::size_t>(), h.at("patches").size());
+    EXPECT_GT(h.at("stats").at("nonzeros").get<std::size_t>(), h.at("patches").size());
+    EXPECT_EQ(h.at("stats").at("nonzeros"), transport.at("interactions"));
+    EXPECT_EQ(u.at("stats").at("nonzeros"), u.at("stats").at("transport").at("interactions"));
+    EXPECT_EQ(transport.at("base_patches").get<int>(), 197);
     EXPECT_NEAR(power(h) / power(u), 1.0, 0.04);
     EXPECT_EQ(h.at("stats").at("converged"), true);
 }

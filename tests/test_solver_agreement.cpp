@@ -3,8 +3,8 @@
 // and a few emitters; the power balances in both.
 #include <gtest/gtest.h>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 #include "solver_test_systems.hpp"
 
 namespace rad {
@@ -12,13 +12,13 @@ namespace {
 
 // builtin:cornell at --patch-size 100 (356 patches). Reciprocity is enforced so that conjugate gradients,
 // which solves the reciprocity-symmetrized system, solves the same system as the others.
-const RadiositySystem& cornell() {
-    static const RadiositySystem system = [] {
+const UniformTransport& cornell() {
+    static const UniformTransport system = [] {
         const Scene scene = make_cornell_box();
         const PatchMesh patches = build_patches(scene, MeshingOptions{.patch_size = 100.0});
         FormFactorOptions form_factors;
         form_factors.enforce_reciprocity = true;
-        return make_radiosity_system(scene, patches, compute_form_factors(patches, form_factors));
+        return make_uniform_transport(scene, patches, compute_form_factors(patches, form_factors));
     }();
     return system;
 }
@@ -65,9 +65,9 @@ TEST(EnergyBalance, CornellBoxEmittedIsAbsorbedPlusEscaped) {
 }
 
 // 300 patches, rows summing to 0.6 .. 0.95 (the rest escapes), exactly reciprocal.
-const RadiositySystem& open_scene() {
-    static const RadiositySystem system = [] {
-        RadiositySystem s = test::random_reciprocal_system({});
+const UniformTransport& open_scene() {
+    static const UniformTransport system = [] {
+        UniformTransport s = test::random_reciprocal_system({});
         test::Uniform uniform(11);
         for (std::size_t i = 0; i < s.size(); ++i) {
             s.reflectance[i] =
@@ -149,7 +149,7 @@ TEST(EnergyBalance, FirstGuessIsNotBalanced) {
 
 // With no light at all every method stops at once with B = 0.
 TEST(NoEmission, EveryMethodConvergesToDarkness) {
-    RadiositySystem dark = open_scene();
+    UniformTransport dark = open_scene();
     dark.emission.assign(dark.size(), glm::dvec3(0.0));
     for (SolverMethod method : all_solver_methods()) {
         auto solver = make_solver(method, dark, SolverOptions{});

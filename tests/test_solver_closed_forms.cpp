@@ -27,7 +27,7 @@ SolverOptions tight() {
 // analytic.md: unit cube, one patch per face, the top emits E = 1, ρ = 0.5 everywhere. The values have six
 // decimals, so they are asserted to within 1e-6 (plus float rounding of F).
 TEST_P(EveryMethod, UnitCubeOnePatchPerFace) {
-    const RadiositySystem system = test::unit_cube_system(0.5, glm::dvec3(1.0));
+    const UniformTransport system = test::unit_cube_system(0.5, glm::dvec3(1.0));
     auto solver = make_solver(GetParam(), system, tight());
     const StepReport report = test::run_to_end(*solver);
     ASSERT_TRUE(report.converged()) << solver->status_message();
@@ -41,7 +41,7 @@ TEST_P(EveryMethod, UnitCubeOnePatchPerFace) {
 
 // analytic.md: two unit squares at distance 1, F12 = F21 = 0.199825, ρ = 0.5, E1 = 1, E2 = 0.
 TEST_P(EveryMethod, TwoParallelSquares) {
-    RadiositySystem system;
+    UniformTransport system;
     system.area = {1.0, 1.0};
     system.reflectance.assign(2, glm::dvec3(0.5));
     system.emission = {glm::dvec3(1.0), glm::dvec3(0.0)};
@@ -59,7 +59,7 @@ TEST_P(EveryMethod, TwoPatchClosedFormPerChannel) {
     const double f21 = a1 * f12 / a2;              // reciprocity: 0.5
     const glm::dvec3 rho1(0.8, 0.3, 0.0), rho2(0.6, 0.9, 0.7);
     const glm::dvec3 e1(1.0, 2.0, 3.0), e2(0.5, 0.0, 1.0);
-    RadiositySystem system;
+    UniformTransport system;
     system.area = {a1, a2};
     system.reflectance = {rho1, rho2};
     system.emission = {e1, e2};
@@ -80,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(Solvers, EveryMethod, ::testing::ValuesIn(all_solver_me
 TEST(Jacobi, StepKIsTheKBouncePartialSum) {
     test::RandomSystemOptions random;
     random.patches = 40;
-    RadiositySystem system = test::random_reciprocal_system(random);
+    UniformTransport system = test::random_reciprocal_system(random);
     test::Uniform uniform(3);
     for (std::size_t i = 0; i < system.size(); ++i) {
         system.reflectance[i] = glm::dvec3(uniform(), uniform(), 0.9 * uniform());
@@ -116,7 +116,7 @@ TEST(Jacobi, StepKIsTheKBouncePartialSum) {
 
 // --bounces stops Jacobi at exactly that many bounces, with a status saying so.
 TEST(Jacobi, StopsAtTheStepLimit) {
-    const RadiositySystem system = test::unit_cube_system(0.5, glm::dvec3(1.0));
+    const UniformTransport system = test::unit_cube_system(0.5, glm::dvec3(1.0));
     SolverOptions options = tight();
     options.max_steps = 3;
     auto solver = make_solver(SolverMethod::jacobi, system, options);
@@ -129,7 +129,7 @@ TEST(Jacobi, StopsAtTheStepLimit) {
 
 // The direct-illumination first guess is Jacobi's step 1.
 TEST(Jacobi, DirectIlluminationStartsOneBounceAhead) {
-    const RadiositySystem system = test::unit_cube_system(0.5, glm::dvec3(1.0));
+    const UniformTransport system = test::unit_cube_system(0.5, glm::dvec3(1.0));
     SolverOptions options = tight();
     auto from_emission = make_solver(SolverMethod::jacobi, system, options);
     options.initial = InitialGuess::direct_illumination;

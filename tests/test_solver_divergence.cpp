@@ -2,7 +2,9 @@
 // out of range are refused with the option's name.
 #include <gtest/gtest.h>
 
-#include "rad/error.hpp"
+#include "cli/input_error_message.hpp"
+
+#include "rad/util/error.hpp"
 #include "solver_test_systems.hpp"
 
 namespace rad {
@@ -16,7 +18,7 @@ std::string method_test_name(const ::testing::TestParamInfo<SolverMethod>& info)
     return name;
 }
 
-void expect_stopped_cleanly(Solver& solver, const RadiositySystem& system) {
+void expect_stopped_cleanly(Solver& solver, const UniformTransport& system) {
     const StepReport report = test::run_to_end(solver, 1'000'000);
     EXPECT_TRUE(report.status == SolverStatus::not_converging || report.status == SolverStatus::diverged)
         << solver_status_name(report.status);
@@ -33,7 +35,7 @@ void expect_stopped_cleanly(Solver& solver, const RadiositySystem& system) {
 // so before doing any work.
 TEST_P(EveryMethod, ReflectanceOneInAClosedSceneIsNotConverging) {
     const double f_adjacent = 0.2;
-    const RadiositySystem system =
+    const UniformTransport system =
         test::unit_cube_system(1.0, glm::dvec3(1.0, 0.0, 0.0), 1.0 - 4 * f_adjacent, f_adjacent);
     auto solver = make_solver(GetParam(), system, SolverOptions{});
     EXPECT_EQ(solver->report().status, SolverStatus::not_converging);
@@ -44,7 +46,7 @@ TEST_P(EveryMethod, ReflectanceOneInAClosedSceneIsNotConverging) {
 // A closed pair of ρ = 1 mirrors-in-effect (F12 = F21 = 1) beside an open patch: not every row keeps all
 // its light, so only running shows the problem (stagnation, growth or breakdown).
 TEST_P(EveryMethod, TrappedLightIsFoundWhileRunning) {
-    RadiositySystem system;
+    UniformTransport system;
     system.area = {1.0, 1.0, 1.0};
     system.reflectance = {glm::dvec3(1.0), glm::dvec3(1.0), glm::dvec3(0.5)};
     system.emission = {glm::dvec3(1.0), glm::dvec3(0.0), glm::dvec3(1.0)};
@@ -56,7 +58,7 @@ TEST_P(EveryMethod, TrappedLightIsFoundWhileRunning) {
 
 // ρ = 1.2 on a closed pair: the light grows by 1.2 each bounce.
 TEST_P(EveryMethod, GrowingLightIsReported) {
-    RadiositySystem system;
+    UniformTransport system;
     system.area = {1.0, 1.0, 1.0};
     system.reflectance = {glm::dvec3(1.2), glm::dvec3(1.2), glm::dvec3(0.5)};
     system.emission = {glm::dvec3(1.0), glm::dvec3(0.0), glm::dvec3(1.0)};
@@ -69,7 +71,7 @@ TEST_P(EveryMethod, GrowingLightIsReported) {
 TEST_P(EveryMethod, OverflowKeepsTheLastFiniteSolution) {
     for (const double huge : {1e150, 1e200}) {
         for (const InitialGuess initial : {InitialGuess::emission, InitialGuess::direct_illumination}) {
-            RadiositySystem system;
+            UniformTransport system;
             system.area = {1.0, 1.0, 1.0};
             system.reflectance = {glm::dvec3(huge), glm::dvec3(huge), glm::dvec3(0.0)};
             system.emission = {glm::dvec3(huge), glm::dvec3(0.0), glm::dvec3(1.0)};
@@ -87,12 +89,12 @@ TEST_P(EveryMethod, OverflowKeepsTheLastFiniteSolution) {
 INSTANTIATE_TEST_SUITE_P(Solvers, EveryMethod, ::testing::ValuesIn(all_solver_methods()), method_test_name);
 
 TEST(SolverOptions, OutOfRangeValuesNameTheirOption) {
-    const RadiositySystem system = test::unit_cube_system(0.5, glm::dvec3(1.0));
+    const UniformTransport system = test::unit_cube_system(0.5, glm::dvec3(1.0));
     auto message_of = [&](SolverMethod method, const SolverOptions& options) -> std::string {
         try {
             make_solver(method, system, options);
         } catch (const InputError& e) {
-            return e.what();
+            return input_error_message(e);
         }
         return "";
     };
@@ -104,14 +106,14 @@ TEST(SolverOptions, OutOfRangeValuesNameTheirOption) {
     EXPECT_NE(message_of(SolverMethod::jacobi, options).find("--tol"), std::string::npos);
     options = {};
     options.direct_max_dense_patches = 5;
-    EXPECT_NE(message_of(SolverMethod::direct, options).find("--solver direct"), std::string::npos);
+    EXPECT_NE(message_of(SolverMethod::direct, options).find("--solver: direct"), std::string::npos);
     EXPECT_THROW(parse_solver_method("newton"), InputError);
     EXPECT_THROW(parse_initial_guess("zero"), InputError);
     for (SolverMethod m : all_solver_methods()) EXPECT_EQ(parse_solver_method(solver_method_name(m)), m);
 }
 
 TEST(SolverInput, MalformedSystemsAreRefused) {
-    RadiositySystem system = test::unit_cube_system(0.5, glm::dvec3(1.0));
+    UniformTransport system = test::unit_cube_system(0.5, glm::dvec3(1.0));
     system.emission[2].y = std::nan("");
     EXPECT_THROW(make_solver(SolverMethod::jacobi, system, SolverOptions{}), std::invalid_argument);
     system = test::unit_cube_system(0.5, glm::dvec3(1.0));

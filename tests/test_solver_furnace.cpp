@@ -6,8 +6,8 @@
 
 #include <tuple>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 #include "solver_test_systems.hpp"
 
 namespace rad {
@@ -33,9 +33,9 @@ const MeshedScene& subdivided_cube() {
     return cube;
 }
 
-RadiositySystem furnace(double reflectance, const glm::dvec3& emission) {
+UniformTransport furnace(double reflectance, const glm::dvec3& emission) {
     const MeshedScene& cube = subdivided_cube();
-    RadiositySystem system = make_radiosity_system(cube.scene, cube.patches, cube.form_factors);
+    UniformTransport system = make_uniform_transport(cube.scene, cube.patches, cube.form_factors);
     system.reflectance.assign(system.size(), glm::dvec3(reflectance));
     system.emission.assign(system.size(), emission);
     return system;
@@ -48,7 +48,7 @@ class Furnace : public ::testing::TestWithParam<FurnaceCase> {};
 TEST_P(Furnace, GivesEOverOneMinusRhoOnEveryPatch) {
     const auto [method, rho] = GetParam();
     const glm::dvec3 e(1.0, 0.5, 2.0);
-    const RadiositySystem system = furnace(rho, e);
+    const UniformTransport system = furnace(rho, e);
     ASSERT_EQ(system.size(), 96u);
     SolverOptions options;
     // A relative residual r bounds the error by about r / (1 − ρ): 1e-7 leaves 1e-5 at ρ = 0.99.
@@ -86,7 +86,7 @@ INSTANTIATE_TEST_SUITE_P(Solvers, Furnace,
 // the sampled form factors' reciprocity error (the balance assumes A_i F_ij = A_j F_ji).
 TEST(ClosedScene, PowerBalancesWithComputedFormFactors) {
     const MeshedScene& cube = subdivided_cube();
-    const RadiositySystem system = make_radiosity_system(cube.scene, cube.patches, cube.form_factors);
+    const UniformTransport system = make_uniform_transport(cube.scene, cube.patches, cube.form_factors);
     auto solver = make_solver(SolverMethod::direct, system, SolverOptions{});
     ASSERT_TRUE(solver->step().converged());
     const EnergyBalance balance = energy_balance(system, solver->solution());
@@ -97,19 +97,19 @@ TEST(ClosedScene, PowerBalancesWithComputedFormFactors) {
 
 // A closed system with exact reciprocity (synthetic, 150 patches of four sizes), non-uniform light and
 // coloured reflectance: emitted = absorbed to rounding.
-RadiositySystem exact_closed_system(double reflectance) {
+UniformTransport exact_closed_system(double reflectance) {
     test::RandomSystemOptions random;
     random.patches = 150;
     random.density = 0.5;
     random.closed = true;
-    RadiositySystem system = test::random_reciprocal_system(random);
+    UniformTransport system = test::random_reciprocal_system(random);
     system.reflectance.assign(system.size(), glm::dvec3(reflectance));
     system.emission.assign(system.size(), glm::dvec3(1.0));
     return system;
 }
 
 TEST(ClosedScene, PowerBalancesExactlyWithReciprocalFormFactors) {
-    RadiositySystem system = exact_closed_system(0.5);
+    UniformTransport system = exact_closed_system(0.5);
     for (std::size_t i = 0; i < system.size(); ++i) {
         system.reflectance[i] = glm::dvec3(0.3 + 0.005 * static_cast<double>(i % 100), 0.9, 0.1);
         system.emission[i] = i % 10 == 0 ? glm::dvec3(3.0, 2.0, 1.0) : glm::dvec3(0.0);
@@ -126,7 +126,7 @@ TEST(ClosedScene, PowerBalancesExactlyWithReciprocalFormFactors) {
 // In a closed, reciprocal scene each Jacobi step adds the power of one more bounce: ρ^k times the emitted.
 TEST(FurnaceJacobi, BouncePowerDecaysAsRhoToTheK) {
     const double rho = 0.9;
-    const RadiositySystem system = exact_closed_system(rho);
+    const UniformTransport system = exact_closed_system(rho);
     auto solver = make_solver(SolverMethod::jacobi, system, SolverOptions{});
     const double emitted = energy_balance(system, system.emission).emitted.x;
     for (int k = 0; k <= 10; ++k) {
@@ -140,7 +140,7 @@ TEST(FurnaceJacobi, BouncePowerDecaysAsRhoToTheK) {
 // equals the converged Σ A E / (1 − ρ) after any number of shots, while the shot solution starts far below.
 TEST(FurnaceSouthwell, AmbientTermMakesTheDisplayedPowerRight) {
     const double rho = 0.9;
-    const RadiositySystem system = exact_closed_system(rho);
+    const UniformTransport system = exact_closed_system(rho);
     auto solver = make_solver(SolverMethod::southwell, system, SolverOptions{});
     const double converged_power = energy_balance(system, system.emission).emitted.x / (1.0 - rho);
     for (int shot = 0; shot < 300; ++shot) {

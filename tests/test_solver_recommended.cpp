@@ -2,7 +2,7 @@
 // settle; then cg. The closed cube's rows sum to 1, so q = ρ and jacobi needs ln(tol) / ln(ρ) steps.
 #include <gtest/gtest.h>
 
-#include "rad/solver.hpp"
+#include "rad/solve/solver.hpp"
 #include "solver_test_systems.hpp"
 
 namespace rad {

@@ -6,9 +6,9 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/polygon_soup.hpp"
-#include "rad/vertex_colours.hpp"
+#include "rad/display/display_mesh.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/scene/polygon_soup.hpp"
 
 namespace rad {
 namespace {

@@ -7,7 +7,7 @@
 #include <glm/vec3.hpp>
 #include <string>
 
-#include "image_io.hpp"
+#include "io/image_io.hpp"
 #include "test_support.hpp"
 
 namespace rad {

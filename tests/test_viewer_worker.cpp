@@ -6,7 +6,7 @@
 #include <chrono>
 #include <thread>
 
-#include "radiosity_pipeline.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
 #include "viewer/solver_worker.hpp"
 
 namespace rad {
@@ -91,6 +91,12 @@ TEST(ViewerWorker, HierarchicalLeavesAreWhatIsDrawnAndStepped) {
     ASSERT_TRUE(snapshot.geometry && snapshot.radiance);
     EXPECT_EQ(snapshot.statistics.subdivision, "hierarchical");
     EXPECT_GT(snapshot.statistics.patches, 197u);  // more leaves than base patches
+    // The panel's "N links" (it showed 0: the hierarchy has no form-factor matrix).
+    EXPECT_EQ(snapshot.statistics.interaction_name, "links");
+    RadiosityPipeline pipeline(options);
+    pipeline.prepare();
+    EXPECT_EQ(snapshot.statistics.interactions, pipeline.transport().report().interactions);
+    EXPECT_GT(snapshot.statistics.interactions, snapshot.statistics.patches);
     EXPECT_EQ(snapshot.radiance->step, 2u);
     expect_near(snapshot.radiance->cumulative, radiance_after(options, 2));
 }

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "rad/form_factors.hpp"
-#include "rad/solver.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 
 namespace rad {
 

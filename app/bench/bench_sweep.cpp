@@ -7,11 +7,11 @@
 #include <limits>
 #include <optional>
 
-#include "rad/camera_view.hpp"
-#include "rad/image_error.hpp"
-#include "rad/path_tracer.hpp"
-#include "radiosity_pipeline.hpp"
-#include "scene_image_renderer.hpp"
+#include "gl/scene_image_renderer.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
+#include "rad/camera/camera_view.hpp"
+#include "rad/reference/image_error.hpp"
+#include "rad/reference/path_tracer.hpp"
 
 namespace rad {
 
@@ -38,23 +38,23 @@ PipelineOptions pipeline_options(const std::string& scene, double patch_size, co
     return options;
 }
 
-std::vector<glm::dvec3> run_to_end(SolverMethod method, const RadiositySystem& system,
-                                   const SolverOptions& options) {
-    const std::unique_ptr<Solver> solver = make_solver(method, system, options);
-    while (!solver->report().finished()) solver->step();
+std::vector<glm::dvec3> solved_radiosity(SolverMethod method, const Transport& transport,
+                                         const SolverOptions& options) {
+    const std::unique_ptr<Solver> solver = make_solver(method, transport, options);
+    run_to_end(*solver);
     return {solver->solution().begin(), solver->solution().end()};
 }
 
 // The exact solution of these form factors: a direct solve where it is affordable, else Gauss-Seidel to a
 // residual of 1e-12 (the same system, so the same answer to rounding). Not CG, which solves the
 // reciprocity-symmetrized system and so answers slightly differently for estimated form factors.
-std::vector<glm::dvec3> converged_solution(const RadiositySystem& system, std::size_t patches,
+std::vector<glm::dvec3> converged_solution(const Transport& transport, std::size_t patches,
                                            const BenchPlan& plan) {
     SolverOptions options;
     options.tolerance = 1e-12;
     options.max_steps = 1'000'000;
     const bool direct = patches <= plan.direct_max_patches;
-    return run_to_end(direct ? SolverMethod::direct : SolverMethod::gauss_seidel, system, options);
+    return solved_radiosity(direct ? SolverMethod::direct : SolverMethod::gauss_seidel, transport, options);
 }
 
 // Patch radiosity of the path tracer on this mesh, and its noise in the norm of relative_rms_difference.
@@ -140,7 +140,7 @@ class SceneSweep {
                     format(", noise %.2f %%", 100.0 * reference->noise));
             }
             pipeline.prepare();
-            const std::vector<glm::dvec3> converged = converged_solution(pipeline.system(), n, plan_);
+            const std::vector<glm::dvec3> converged = converged_solution(pipeline.transport(), n, plan_);
             const bool all_solvers = e == 0;
             for (std::size_t s = 0; s < (all_solvers ? plan_.solvers.size() : 1); ++s) {
                 const SolverMethod method = plan_.solvers[s];
@@ -174,7 +174,7 @@ class SceneSweep {
         row.scene = scene_;
         row.subdivision = method;
         row.patches = pipeline.patches().size();
-        row.links = pipeline.form_factor_report().nonzeros;
+        row.links = pipeline.transport().report().interactions;
         row.patch_size = pipeline.loaded().patch_size;
         row.estimator =
             (method == "hierarchical" ? "links" : "hemisphere " + std::to_string(kDefaultHemisphereRays)) +
@@ -207,7 +207,7 @@ class SceneSweep {
         row.solve_seconds = seconds_since(start);
         row.scene = scene_;
         row.patches = n;
-        row.links = pipeline.system().form_factors.nonzeros();
+        row.links = pipeline.transport().report().interactions;
         row.estimator = estimator_label(setting);
         row.solver = command.method;
         row.steps = report.step;
@@ -218,7 +218,7 @@ class SceneSweep {
         row.solver_error = relative_rms_difference(pipeline.loaded().patches, solution, converged);
         // The path tracer averages over whole patches, covered parts included.
         const std::vector<glm::dvec3> whole =
-            whole_patch_radiosity(pipeline.system(), pipeline.loaded().patches, solution);
+            whole_patch_radiosity(pipeline.transport(), pipeline.loaded().patches, solution);
         row.total_error = relative_rms_difference(pipeline.loaded().patches, whole, reference.radiosity);
         row.reference_noise = reference.noise;
         const auto render_start = std::chrono::steady_clock::now();

@@ -7,9 +7,9 @@
 
 #include "bench/bench_plan.hpp"
 #include "bench/path_tracer_search.hpp"
-#include "image_io.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/progress.hpp"
+#include "io/image_io.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/util/progress.hpp"
 
 namespace rad {
 

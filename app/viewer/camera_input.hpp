@@ -2,7 +2,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "rad/fly_camera.hpp"
+#include "rad/camera/fly_camera.hpp"
 
 struct GLFWwindow;
 

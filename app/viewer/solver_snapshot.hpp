@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "rad/scene.hpp"
-#include "rad/solver.hpp"
-#include "radiosity_pipeline.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
+#include "rad/scene/scene.hpp"
+#include "rad/solve/solver.hpp"
 
 namespace rad {
 
@@ -47,8 +47,9 @@ struct ViewerRadiance {
 struct ViewerStatistics {
     std::string scene;
     std::size_t patches = 0;
-    std::size_t nonzeros = 0;  // form factors, or hierarchical links
-    std::string subdivision;   // uniform, adaptive, hierarchical
+    std::size_t interactions = 0;  // the transport's form factors, or links
+    std::string interaction_name;  // "form factors", "links"
+    std::string subdivision;       // uniform, adaptive, hierarchical
     double patch_size = 0.0;
     StageSeconds seconds;
     SolverMethod method = SolverMethod::jacobi;

@@ -1,13 +1,15 @@
 #include "viewer/solver_worker.hpp"
 
+#include "cli/input_error_message.hpp"
+
 #include <tbb/task_arena.h>
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
-#include "rad/camera_view.hpp"
-#include "rad/display_outline.hpp"
-#include "rad/error.hpp"
+#include "rad/camera/camera_view.hpp"
+#include "rad/display/display_outline.hpp"
+#include "rad/util/error.hpp"
 
 namespace rad {
 
@@ -176,7 +178,7 @@ void SolverWorker::loop() {
         } catch (const Cancelled&) {
             fail("cancelled; re-mesh or reset to compute again");
         } catch (const InputError& e) {
-            fail(e.what(), true);
+            fail(input_error_message(e), true);
         } catch (const std::exception& e) {
             fail(std::string("failed: ") + e.what());
         }
@@ -206,8 +208,8 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     }
     publish_statistics();
     pipeline_->prepare(progress_.get());
-    if (pipeline_->subdivision() != Subdivision::uniform) {
-        // Adaptive and hierarchical subdivision made new patches: new geometry to draw.
+    if (&pipeline_->patches() != &pipeline_->loaded().patches) {
+        // The transport's elements are new patches (adaptive or hierarchical leaves): new geometry to draw.
         display_ = build_display_mesh(pipeline_->patches(), options_.display);
         publish(true, false);
     }
@@ -321,7 +323,9 @@ void SolverWorker::publish_statistics() {
         statistics.prepared = pipeline_->work().form_factor_passes > 0;
         statistics.form_factor_passes = pipeline_->work().form_factor_passes;
         if (statistics.prepared) {
-            statistics.nonzeros = pipeline_->system().form_factors.nonzeros();
+            const TransportReport transport = pipeline_->transport().report();
+            statistics.interactions = transport.interactions;
+            statistics.interaction_name = transport.interaction_name;
             statistics.status = pipeline_->solver().report().status;
             statistics.status_message = pipeline_->solver().status_message();
         }

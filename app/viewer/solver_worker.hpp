@@ -12,9 +12,9 @@
 
 #include <tbb/task_arena.h>
 
-#include "rad/progress.hpp"
-#include "rad/vertex_colours.hpp"
-#include "radiosity_pipeline.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
+#include "rad/display/display_mesh.hpp"
+#include "rad/util/progress.hpp"
 #include "viewer/solver_snapshot.hpp"
 
 namespace rad {

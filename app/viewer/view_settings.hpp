@@ -2,7 +2,7 @@
 
 #include <cstddef>
 
-#include "rad/vertex_colours.hpp"
+#include "rad/display/display_mesh.hpp"
 
 namespace rad {
 

@@ -11,7 +11,7 @@
 #include <exception>
 #include <iostream>
 
-#include "rad/camera_view.hpp"
+#include "rad/camera/camera_view.hpp"
 #include "viewer/window_screenshot.hpp"
 
 namespace rad {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "gl/renderer.hpp"
-#include "rad/fly_camera.hpp"
+#include "rad/camera/fly_camera.hpp"
 #include "viewer/camera_input.hpp"
 #include "viewer/frame_timer.hpp"
 #include "viewer/glfw_window.hpp"

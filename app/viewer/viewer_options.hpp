@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "radiosity_pipeline.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
 
 namespace rad {
 

@@ -197,8 +197,7 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
 
 void ViewerPanel::draw_statistics(const ViewerStatistics& statistics, const FrameTimer& frames) {
     ImGui::Text("%zu patches (%s, size %.4g), %zu %s", statistics.patches, statistics.subdivision.c_str(),
-                statistics.patch_size, statistics.nonzeros,
-                statistics.subdivision == "hierarchical" ? "links" : "form factors");
+                statistics.patch_size, statistics.interactions, statistics.interaction_name.c_str());
     ImGui::Text("seconds: mesh %.3f, form factors %.3f, solve %.3f", statistics.seconds.mesh,
                 statistics.seconds.form_factors, statistics.seconds.solve);
     ImGui::Text("frame %.1f ms (mean %.1f ms), longest while working %.1f ms", frames.latest() * 1e3,

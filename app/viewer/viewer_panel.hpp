@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "radiosity_pipeline.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
 #include "viewer/frame_timer.hpp"
 #include "viewer/solver_worker.hpp"
 #include "viewer/view_settings.hpp"

@@ -17,10 +17,10 @@
 #include <map>
 #include <vector>
 
-#include "form_factors_hemisphere.hpp"
-#include "rad/builtin_scenes.hpp"
-#include "rad/embree_scene.hpp"
-#include "rad/form_factors.hpp"
+#include "rad/ray/ray_scene.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <optional>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/path_tracer.hpp"
+#include "rad/reference/path_tracer.hpp"
+#include "rad/scene/builtin_scenes.hpp"
 
 namespace rad {
 namespace {

@@ -65,7 +65,8 @@ void BM_ColourUpload(benchmark::State& state) {
         renderer.update_colours(grid.colours);
         glFinish();
     }
-    state.SetBytesProcessed(std::int64_t(state.iterations()) * std::int64_t(grid.colours.size() * sizeof(glm::vec3)));
+    state.SetBytesProcessed(std::int64_t(state.iterations()) *
+                            std::int64_t(grid.colours.size() * sizeof(glm::vec3)));
 }
 BENCHMARK(BM_ColourUpload)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -12,21 +12,21 @@
 #include <map>
 #include <string>
 
-#include "rad/builtin_scenes.hpp"
-#include "rad/form_factors.hpp"
-#include "rad/radiosity_system.hpp"
-#include "rad/solver.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 
 namespace rad {
 namespace {
 
 struct BenchScene {
-    RadiositySystem system;
+    UniformTransport system;
     std::vector<glm::dvec3> reference;  // the direct solve
     double reference_seconds = 0.0;
 };
 
-double relative_error(const RadiositySystem& system, std::span<const glm::dvec3> b,
+double relative_error(const UniformTransport& system, std::span<const glm::dvec3> b,
                       const std::vector<glm::dvec3>& reference) {
     double difference = 0.0, total = 0.0;
     for (std::size_t i = 0; i < b.size(); ++i) {
@@ -37,7 +37,7 @@ double relative_error(const RadiositySystem& system, std::span<const glm::dvec3>
     return difference / total;
 }
 
-BenchScene solved(RadiositySystem system) {
+BenchScene solved(UniformTransport system) {
     BenchScene scene{std::move(system), {}, 0.0};
     const auto start = std::chrono::steady_clock::now();
     auto direct = make_solver(SolverMethod::direct, scene.system, SolverOptions{});
@@ -54,13 +54,13 @@ const BenchScene& cornell() {
         FormFactorOptions form_factors;
         form_factors.enforce_reciprocity = true;
         return solved(
-            make_radiosity_system(cornell_box, patches, compute_form_factors(patches, form_factors)));
+            make_uniform_transport(cornell_box, patches, compute_form_factors(patches, form_factors)));
     }();
     return scene;
 }
 
 // builtin:cube at 16 × 16 patches a face, form-factor rows scaled to sum to 1, ρ = 0.99.
-RadiositySystem high_albedo_cube(bool uniform_emission) {
+UniformTransport high_albedo_cube(bool uniform_emission) {
     static const Scene cube = make_cube();
     static const PatchMesh patches = build_patches(cube, MeshingOptions{.patch_size = 1.0 / 16.0});
     static const FormFactorMatrix f = [] {
@@ -68,7 +68,7 @@ RadiositySystem high_albedo_cube(bool uniform_emission) {
         form_factors.normalize_rows = true;
         return compute_form_factors(patches, form_factors);
     }();
-    RadiositySystem system = make_radiosity_system(cube, patches, f);
+    UniformTransport system = make_uniform_transport(cube, patches, f);
     system.reflectance.assign(system.size(), glm::dvec3(0.99));
     if (uniform_emission) system.emission.assign(system.size(), glm::dvec3(1.0));
     return system;

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
-#include "rad/error.hpp"
-#include "rad/patches.hpp"
-#include "rad/scene_loader.hpp"
+#include "cli/command_line.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "rad/util/error.hpp"
 
 namespace rad::fuzz {
 

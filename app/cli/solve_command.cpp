@@ -1,0 +1,140 @@
+// `radiosity solve [SCENE] --json FILE`: meshes the scene, computes the form factors, runs the chosen solver
+// to convergence (or its step limit), writes the per-patch results and statistics as JSON and prints a short
+// summary, and with --export the display mesh with its colours. Exit status 1 (after writing the JSON, and
+// exporting nothing) when the system cannot converge.
+#include <sys/resource.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/export_option.hpp"
+#include "cli/output_folder.hpp"
+#include "cli/progress_bar.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
+#include "rad/io/solution_json.hpp"
+#include "rad/util/error.hpp"
+
+namespace rad {
+
+namespace {
+
+struct SolveCommandOptions {
+    PipelineOptions pipeline;
+    std::string json_path;
+    std::vector<std::string> exports;
+    double exposure = 0.0;
+};
+
+std::size_t peak_memory_bytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+void print_transport(std::ostream& out, const TransportReport& t) {
+    char line[512];
+    std::snprintf(line, sizeof line, "transport: %s, %zu elements, %zu %s (the nonzeros), %.1f MB, %.3f s\n",
+                  t.kind.c_str(), t.elements, t.interactions, t.interaction_name.c_str(),
+                  static_cast<double>(t.memory_bytes) / 1e6, t.seconds);
+    out << line;
+    std::string details;
+    for (const TransportDetail& d : t.details) {
+        std::snprintf(line, sizeof line, "%s%s %.6g", details.empty() ? "" : ", ", d.name.c_str(), d.value);
+        details += line;
+    }
+    if (!t.notes.empty()) details += (details.empty() ? "" : "; ") + t.notes;
+    if (!details.empty()) out << "  " << details << '\n';
+}
+
+void print_summary(std::ostream& out, const RadiosityPipeline& pipeline, const SolveStatistics& stats) {
+    const LoadedScene& loaded = pipeline.loaded();
+    char line[512];
+    std::snprintf(line, sizeof line, "scene: %s, %zu patches (%s, patch size %.6g)\n",
+                  loaded.scene.source.c_str(), pipeline.patches().size(),
+                  std::string(subdivision_name(pipeline.subdivision())).c_str(), loaded.patch_size);
+    out << line;
+    print_transport(out, stats.transport);
+    std::snprintf(line, sizeof line, "solver: %s, %zu steps, relative residual %.3g (tolerance %.3g): %s\n",
+                  stats.solver.c_str(), stats.iterations, stats.residual, stats.tolerance,
+                  stats.status.c_str());
+    out << line;
+    std::snprintf(line, sizeof line,
+                  "seconds: mesh %.3f, form factors %.3f, solve %.3f; peak memory %.1f MB\n",
+                  stats.mesh_seconds, stats.form_factor_seconds, stats.solve_seconds,
+                  static_cast<double>(stats.peak_memory_bytes) / 1e6);
+    out << line;
+    const auto total = [](const glm::dvec3& v) { return v.x + v.y + v.z; };
+    std::snprintf(line, sizeof line, "power (sum of channels): emitted %.6g, absorbed %.6g, escaped %.6g\n",
+                  total(stats.energy.emitted), total(stats.energy.absorbed), total(stats.energy.escaped));
+    out << line;
+}
+
+SolveStatistics statistics(const RadiosityPipeline& pipeline) {
+    const Solver& solver = pipeline.solver();
+    const StepReport& report = solver.report();
+    SolveStatistics stats;
+    stats.solver = solver_method_name(pipeline.method());
+    stats.iterations = report.step;
+    stats.residual = report.residual;
+    stats.tolerance = pipeline.solver_options().tolerance;
+    stats.converged = report.converged();
+    stats.status = solver_status_name(report.status);
+    stats.status_message = solver.status_message();
+    stats.mesh_seconds = pipeline.seconds().mesh;
+    stats.form_factor_seconds = pipeline.seconds().form_factors;
+    stats.solve_seconds = pipeline.seconds().solve;
+    stats.energy = pipeline.energy_balance();
+    stats.transport = pipeline.transport().report();
+    stats.peak_memory_bytes = peak_memory_bytes();
+    return stats;
+}
+
+int run_solve(const SolveCommandOptions& options) {
+    require_output_folder("--json", options.json_path);
+    check_export_paths(options.exports);
+    RadiosityPipeline pipeline(options.pipeline);
+    {
+        Progress progress;
+        const ProgressBar bar(progress);
+        pipeline.solve(&progress);
+    }
+    const SolveStatistics stats = statistics(pipeline);
+    const LoadedScene& loaded = pipeline.loaded();
+    write_solution_json(options.json_path, loaded.scene, pipeline.patches(), pipeline.transport(),
+                        pipeline.solver().solution(), stats);
+
+    print_summary(std::cout, pipeline, stats);
+    std::cout << "wrote " << options.json_path << '\n';
+    const SolverStatus status = pipeline.solver().report().status;
+    if (status == SolverStatus::iteration_limit) {
+        std::cerr << "radiosity: warning: " << stats.status_message << '\n';
+    }
+    if (status == SolverStatus::diverged || status == SolverStatus::not_converging) {
+        std::cerr << "radiosity: failed: the solver " << stats.status << ": " << stats.status_message << '\n';
+        return 1;  // a failed solution is recorded in the JSON but not exported as colours
+    }
+    write_exports(options.exports, pipeline, options.exposure, std::cout);
+    return 0;
+}
+
+}  // namespace
+
+CommandRunner add_solve_command(CLI::App& app) {
+    auto options = std::make_shared<SolveCommandOptions>();
+    CLI::App* solve =
+        app.add_subcommand("solve", "Solve SCENE's radiosity and write per-patch results as JSON");
+    add_pipeline_options(*solve, options->pipeline);
+    solve->add_option("--json", options->json_path, "Where to write the per-patch results and statistics")
+        ->required();
+    add_export_option(*solve, options->exports);
+    add_exposure_option(*solve, options->exposure,
+                        "--export only: the colours show radiance x 2^EXPOSURE (as render does)");
+    return [solve, options]() -> int {
+        if (!*solve) return -1;
+        return run_solve(*options);
+    };
+}
+
+}  // namespace rad

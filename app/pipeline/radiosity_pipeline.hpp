@@ -1,0 +1,99 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "pipeline/scene_options.hpp"
+#include "pipeline/solver_options.hpp"
+#include "pipeline/subdivision_options.hpp"
+#include "rad/display/display_mesh.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/scene_transport.hpp"
+#include "rad/util/progress.hpp"
+
+namespace rad {
+
+// The options of every command that solves a scene (solve, render, view, bench), registered together.
+struct PipelineOptions {
+    SceneOptions scene;
+    FormFactorOptions form_factors;
+    SolverCommandOptions solver;
+    SubdivisionOptions subdivision;
+    DisplayOptions display;
+};
+
+void add_pipeline_options(CLI::App& command, PipelineOptions& options);
+
+// How much work was done, so callers and tests can check that nothing runs twice.
+struct WorkCounts {
+    std::size_t form_factor_passes = 0;
+    std::size_t solver_steps = 0;
+};
+
+struct StageSeconds {
+    double mesh = 0.0;
+    double form_factors = 0.0;
+    double solve = 0.0;
+};
+
+// From a meshed scene to radiance per display vertex: the transport built once, then the solver stepped by
+// the caller (or to the end), and the display mesh built once. The viewer steps it; the commands run it
+// through. It never asks which kind of transport it holds.
+class RadiosityPipeline {
+  public:
+    // Loads and meshes the scene (for hierarchical radiosity, into base patches). Throws InputError for bad
+    // input or options.
+    explicit RadiosityPipeline(const PipelineOptions& options);
+
+    // Builds the transport (form factors, adaptive passes or hierarchical links) and makes the solver; does
+    // nothing the second time. Adaptive and hierarchical subdivision change patches() and display().
+    void prepare(Progress* progress = nullptr);
+    // One solver step (prepares first if needed).
+    StepReport step();
+    // Steps until the solver finishes (converged, limit, or cannot converge).
+    const StepReport& solve(Progress* progress = nullptr);
+    // A fresh solver from B = E with this method and these options, keeping the transport (prepares first
+    // if needed): the viewer's "reset to emission only" and its solver switch. Throws InputError naming
+    // --solver for a method the transport cannot run.
+    void restart_solver(SolverMethod method, const SolverOptions& options);
+
+    const LoadedScene& loaded() const { return loaded_; }
+    // The patches the solution belongs to: the meshed scene's, or after prepare the adaptive or
+    // hierarchical leaves.
+    const PatchMesh& patches() const { return built_.patches ? *built_.patches : loaded_.patches; }
+    Subdivision subdivision() const { return subdivision_; }
+    // Built on first use, so `solve` never pays for it.
+    const DisplayMesh& display() const;
+    // After prepare.
+    const Transport& transport() const { return *built_.transport; }
+    const Solver& solver() const { return *solver_; }
+    const SolverOptions& solver_options() const { return solver_options_; }
+    SolverMethod method() const { return method_; }
+
+    // Emitted, absorbed and escaped power of the solution as it stands (after prepare).
+    EnergyBalance energy_balance() const;
+
+    // Linear radiance L = B / π per display vertex for the solution as it stands (black before prepare).
+    std::vector<glm::vec3> vertex_radiance() const;
+
+    const WorkCounts& work() const { return work_; }
+    const StageSeconds& seconds() const { return seconds_; }
+
+  private:
+    TransportSettings transport_settings() const;
+
+    PipelineOptions options_;
+    Subdivision subdivision_ = Subdivision::uniform;
+    LoadedScene loaded_;
+    SceneTransport built_;
+    mutable std::optional<DisplayMesh> display_;  // of patches(), once asked for
+    SolverMethod method_;
+    SolverOptions solver_options_;
+    std::unique_ptr<Solver> solver_;
+    WorkCounts work_;
+    StageSeconds seconds_;
+};
+
+}  // namespace rad

@@ -1,0 +1,35 @@
+#include "pipeline/scene_options.hpp"
+
+#include <cmath>
+#include <iostream>
+
+#include "cli/number_checks.hpp"
+#include "rad/scene/scene_loader.hpp"
+
+namespace rad {
+
+void add_scene_options(CLI::App& command, SceneOptions& options) {
+    command
+        .add_option("scene", options.scene,
+                    "Scene: a .obj (with its .mtl) or .ply file, or builtin:NAME (cornell, cube, parallel, "
+                    "perpendicular)")
+        ->capture_default_str();
+    command
+        .add_option("--patch-size", options.patch_size,
+                    "Largest patch edge, in scene units (default: a sixteenth of the scene's largest extent)")
+        ->check(positive_number());
+}
+
+LoadedScene load_and_mesh(const SceneOptions& options, double default_scale) {
+    LoadedScene loaded;
+    loaded.scene = load_scene(options.scene);
+    for (const std::string& w : loaded.scene.warnings) std::cerr << "radiosity: warning: " << w << '\n';
+    loaded.patch_size =
+        options.patch_size > 0.0 ? options.patch_size : default_scale * default_patch_size(loaded.scene);
+    MeshingOptions meshing;
+    meshing.patch_size = loaded.patch_size;
+    loaded.patches = build_patches(loaded.scene, meshing);
+    return loaded;
+}
+
+}  // namespace rad

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/scene.hpp"
+
+namespace rad {
+
+// The options every command that loads a scene shares.
+struct SceneOptions {
+    std::string scene = "builtin:cornell";
+    double patch_size = 0.0;  // 0: the scene's default
+};
+
+void add_scene_options(CLI::App& command, SceneOptions& options);
+
+struct LoadedScene {
+    Scene scene;
+    PatchMesh patches;
+    double patch_size = 0.0;
+};
+
+// Loads and meshes the scene, printing its warnings to stderr. Without --patch-size the patch size is
+// default_scale × the scene's default. Throws InputError for bad input.
+LoadedScene load_and_mesh(const SceneOptions& options, double default_scale = 1.0);
+
+}  // namespace rad

@@ -1,0 +1,67 @@
+#include "pipeline/subdivision_options.hpp"
+
+#include "cli/number_checks.hpp"
+#include "pipeline/scene_options.hpp"
+#include "rad/util/error.hpp"
+
+namespace rad {
+
+double base_patch_scale(Subdivision subdivision) {
+    switch (subdivision) {
+        case Subdivision::adaptive:
+            return kAdaptiveBaseScale;
+        case Subdivision::hierarchical:
+            return kHierarchicalBaseScale;
+        case Subdivision::uniform:
+            break;
+    }
+    return 1.0;
+}
+
+Subdivision parse_subdivision(const std::string& name) {
+    for (Subdivision s : all_subdivisions())
+        if (name == subdivision_name(s)) return s;
+    throw InputError("--subdivision: unknown method '" + name + "' (uniform, adaptive, hierarchical)");
+}
+
+void add_subdivision_options(CLI::App& command, SubdivisionOptions& options) {
+    command
+        .add_option("--subdivision", options.method,
+                    "How patches are made: uniform (one size), adaptive (split where the light changes, then "
+                    "solved again; --patch-size is the first size, by default twice the uniform one) or "
+                    "hierarchical (a quadtree of elements linked where needed; --patch-size is the base "
+                    "patch size, by default 4 times the uniform one)")
+        ->check(CLI::IsMember({"uniform", "adaptive", "hierarchical"}))
+        ->capture_default_str();
+    command
+        .add_option("--refine-tol", options.tolerance,
+                    "adaptive: the relative step between neighbours that splits them (default 0.15); "
+                    "hierarchical: the error a link may leave in its receiver, relative to the scene's mean "
+                    "radiosity (default 0.02)")
+        ->check(positive_number());
+    command
+        .add_option("--min-patch-size", options.min_patch_size,
+                    "adaptive and hierarchical: patches are not split below this edge, in scene units "
+                    "(default: adaptive, each first patch's longest edge / 8; hierarchical, the largest base "
+                    "patch edge / 64)")
+        ->check(positive_number());
+}
+
+AdaptiveOptions adaptive_options(const SubdivisionOptions& options, std::uint64_t seed) {
+    AdaptiveOptions a;
+    a.tolerance = options.tolerance > 0.0 ? options.tolerance : 0.15;
+    a.min_patch_size = options.min_patch_size;
+    a.seed = seed;
+    return a;
+}
+
+HierarchicalOptions hierarchical_options(const SubdivisionOptions& options, int rays, std::uint64_t seed) {
+    HierarchicalOptions h;
+    if (options.tolerance > 0.0) h.tolerance = options.tolerance;
+    h.min_patch_size = options.min_patch_size;
+    h.visibility_rays = rays;
+    h.seed = seed;
+    return h;
+}
+
+}  // namespace rad

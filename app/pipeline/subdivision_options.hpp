@@ -1,0 +1,41 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <string_view>
+
+#include "rad/transport/scene_transport.hpp"
+
+namespace rad {
+
+struct SubdivisionOptions {
+    std::string method = "uniform";
+    double tolerance = 0.0;       // --refine-tol; 0 picks the method's default
+    double min_patch_size = 0.0;  // --min-patch-size; 0 picks the method's default
+};
+
+void add_subdivision_options(CLI::App& command, SubdivisionOptions& options);
+
+// Throws InputError naming --subdivision for an unknown name.
+Subdivision parse_subdivision(const std::string& name);
+
+// The hierarchical solver's options from the command line's (and the form-factor seed and --rays).
+HierarchicalOptions hierarchical_options(const SubdivisionOptions& options, int rays, std::uint64_t seed);
+
+// Adaptive subdivision's options from the command line's (and the form-factor seed). Its default tolerance,
+// 0.15, is where it matched or beat uniform meshes of as many patches in both absolute and relative error
+// on the Cornell box (tests/test_adaptive_subdivision.cpp, RAD_ADAPTIVE_MEASURE=1).
+AdaptiveOptions adaptive_options(const SubdivisionOptions& options, std::uint64_t seed);
+
+// Without --patch-size, the first (adaptive) or base (hierarchical) patches are this many times the uniform
+// default size.
+double base_patch_scale(Subdivision subdivision);
+
+// Adaptive subdivision starts from patches this many times the uniform default size.
+inline constexpr double kAdaptiveBaseScale = 2.0;
+
+// A base patch of hierarchical radiosity is this many times the uniform default size: every pair of base
+// patches gets a link, so they are few, and the hierarchy refines them.
+inline constexpr double kHierarchicalBaseScale = 4.0;
+
+}  // namespace rad

@@ -1,0 +1,64 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <span>
+#include <vector>
+
+#include "rad/mesh/patch_mesh.hpp"
+
+namespace rad {
+
+// smooth: each vertex takes the area-weighted radiosity of the patches around it that lie on the same
+//         surface (hence material) and bend from one another by less than the crease angle, so walls do not
+//         bleed into each other and a box's edges stay sharp while a tessellated curve shades smoothly.
+//         Where a smaller patch's corner lies inside a larger one's edge (a T-vertex, listed in the mesh's
+//         outlines), the larger patch takes part in that vertex too and is drawn as a fan from its centroid
+//         (which shows its own value) through every point of its outline, so no crack opens there.
+// flat:   every patch has its own corners and shows its own radiosity (outlines are not needed).
+enum class ColourMode { smooth, flat };
+
+// How smooth mode sets a vertex from the patches around it.
+// average: their area-weighted mean. A vertex on a surface's border then takes the value half a patch
+//          inside, which brightens concave edges and blurs shadow edges.
+// linear:  each patch's value extrapolated to the vertex along the patch's least-squares gradient (from
+//          its neighbours on the same smooth surface), then area-weighted; exact for a linear field at
+//          every vertex, borders included. Negative results are shown as 0.
+enum class Reconstruction { average, linear };
+
+struct DisplayOptions {
+    ColourMode mode = ColourMode::smooth;
+    // Patches meeting at a corner share a vertex when their normals differ by less than this. 30° keeps the
+    // faces of boxes apart (90°) and joins the facets of a curved surface tessellated finer than 12 sides
+    // per circle.
+    double crease_angle_degrees = 30.0;
+    Reconstruction reconstruction = Reconstruction::linear;
+};
+
+// The geometry to draw, built once: a renderer uploads positions, normals and triangles once and, after
+// each solver step, only the colours vertex_radiance returns (one per vertex, in the same order).
+struct DisplayMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;             // unit, front side
+    std::vector<glm::uvec3> triangles;          // counter-clockwise from the front
+    std::vector<std::uint32_t> triangle_patch;  // the patch each triangle belongs to (for picking)
+    // Vertex v's colour is Σ weight[k] B[weight_patch[k]] / π over k in [weight_begin[v], weight_begin[v+1]),
+    // at least 0; its weights sum to 1.
+    std::vector<std::uint32_t> weight_begin{0};
+    std::vector<std::uint32_t> weight_patch;
+    std::vector<float> weight;
+    std::size_t patch_count = 0;  // the radiosity vertex_radiance takes has one entry per patch
+
+    std::size_t vertex_count() const { return positions.size(); }
+};
+
+DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& options = {});
+
+// Radiance L = B / π per display vertex, from the radiosity B per patch (a Solver's display_solution()).
+// Writes radiance[v] for every vertex; radiance must hold vertex_count() entries.
+void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
+                     std::span<glm::vec3> radiance);
+std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity);
+
+}  // namespace rad

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "rad/scene/material.hpp"
+#include "rad/scene/scene.hpp"
+
+namespace rad {
+
+// What a loader reads from a file before it becomes a Scene: positions, polygons as index lists, and
+// groups (one per future surface), each with its material. Loaders validate syntax, indices and values;
+// build_scene turns the soup into surfaces.
+struct PolygonSoup {
+    struct Polygon {
+        std::vector<std::uint32_t> vertices;
+        std::uint32_t group = 0;
+    };
+    struct Group {
+        std::string name;
+        Material material;
+    };
+
+    std::string source;
+    std::vector<glm::dvec3> positions;
+    std::vector<Polygon> polygons;
+    std::vector<Group> groups;
+};
+
+// One surface per group that has faces. Zero-area polygons are dropped (and counted in a warning); polygons
+// that are not planar and convex are triangulated; an edge that OpenMesh cannot take (non-manifold) gets
+// its own copy of the vertices. An emitting polygon that lies in the plane of a non-emitting one, facing the
+// same way and overlapping it, is moved a thousandth of the scene's diagonal in front of it, with a warning
+// (core/src/coplanar_emitters.hpp). Throws InputError when nothing with area is left.
+Scene build_scene(const PolygonSoup& soup);
+
+}  // namespace rad

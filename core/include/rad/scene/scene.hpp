@@ -1,0 +1,65 @@
+#pragma once
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rad/scene/material.hpp"
+
+namespace rad {
+
+struct SurfaceMeshTraits : OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3d;
+    using Normal = OpenMesh::Vec3d;
+};
+
+// A surface's geometry: planar convex polygons, counter-clockwise seen from the lit (front) side.
+using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<SurfaceMeshTraits>;
+
+// A named piece of the scene with one material.
+struct Surface {
+    std::string name;
+    Material material;
+    SurfaceMesh mesh;
+};
+
+// A pinhole camera; fov is the vertical field of view in degrees.
+struct Camera {
+    glm::dvec3 eye{0.0};
+    glm::dvec3 target{0.0, 0.0, -1.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fov_degrees = 45.0;
+};
+
+struct BoundingBox {
+    glm::dvec3 min{std::numeric_limits<double>::infinity()};
+    glm::dvec3 max{-std::numeric_limits<double>::infinity()};
+
+    void extend(const glm::dvec3& p);
+    bool empty() const { return min.x > max.x; }
+    glm::dvec3 extent() const { return empty() ? glm::dvec3(0.0) : max - min; }
+    double largest_extent() const;
+};
+
+struct Scene {
+    std::string source;  // file path or builtin:NAME, for messages
+    std::vector<Surface> surfaces;
+    std::optional<Camera> camera;
+    std::vector<std::string> warnings;  // for the caller to show; the library prints nothing
+};
+
+inline glm::dvec3 to_glm(const OpenMesh::Vec3d& p) {
+    return {p[0], p[1], p[2]};
+}
+
+double face_area(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle face);
+double surface_area(const SurfaceMesh& mesh);
+double total_area(const Scene& scene);
+BoundingBox bounding_box(const Scene& scene);
+bool has_emitter(const Scene& scene);
+// The indices of the surfaces whose material emits.
+std::vector<std::uint32_t> emitting_surfaces(const Scene& scene);
+
+}  // namespace rad

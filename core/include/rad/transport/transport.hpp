@@ -1,0 +1,90 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace rad {
+
+struct FormFactorMatrix;
+
+// A figure of one transport method beyond what every method reports (row sums, rounds, leaves...).
+struct TransportDetail {
+    std::string name;  // snake_case, as written in the solution JSON
+    double value = 0.0;
+};
+
+// What building a transport cost and made, in the same terms for every method.
+struct TransportReport {
+    std::string kind;              // "uniform", "adaptive", "hierarchical"
+    std::string interaction_name;  // what the interactions are: "form factors" or "links"
+    std::size_t elements = 0;      // what the solution is indexed by
+    std::size_t interactions = 0;  // stored form factors, or links
+    std::size_t memory_bytes = 0;  // of the interactions and what gather reads besides
+    std::uint64_t rays = 0;
+    double seconds = 0.0;
+    std::size_t form_factor_passes = 0;  // how many times the scene's interactions were computed
+    std::vector<TransportDetail> details;
+    std::string notes;  // one line for people (adaptive passes, limits reached), or empty
+
+    // The detail of that name, or `fallback`.
+    double detail(const std::string& name, double fallback = 0.0) const;
+};
+
+// Light transport between the elements the solution is indexed by (patches, or the leaves of a hierarchy):
+// per element its area A (the exposed part, where other geometry covers some of it), reflectance ρ and
+// emitted radiosity E (= π Le), and the one operation every solver needs, gather(B) = H, the irradiance each
+// element receives per unit area from radiosity B. The radiosity equation is B = E + ρ H(B); a Jacobi step
+// is exactly that. Methods that need the coefficients themselves (Gauss-Seidel, Southwell, CG, direct) read
+// matrix(), which only form-factor transports have.
+class Transport {
+  public:
+    virtual ~Transport() = default;
+
+    std::size_t size() const { return area.size(); }
+
+    // H_i = Σ_j F_ij B_j for the transport's F, into `irradiance` (one per element). Deterministic: the
+    // same for any number of threads. Call it from one thread at a time.
+    virtual void gather(std::span<const glm::dvec3> radiosity, std::span<glm::dvec3> irradiance) const = 0;
+    // Per element, the share of the light it sends that reaches other elements: Σ_j F_ij, the row sum (at
+    // most about 1; 1 in a closed scene). What is left escapes the scene.
+    virtual std::vector<double> reach() const = 0;
+    // The form factors as a sparse matrix, or nullptr where the transport is not one (links).
+    virtual const FormFactorMatrix* matrix() const { return nullptr; }
+    virtual TransportReport report() const = 0;
+
+    std::vector<double> area;
+    std::vector<glm::dvec3> reflectance;
+    std::vector<glm::dvec3> emission;
+
+  protected:
+    Transport() = default;
+    Transport(const Transport&) = default;
+    Transport(Transport&&) = default;
+    Transport& operator=(const Transport&) = default;
+    Transport& operator=(Transport&&) = default;
+};
+
+// Throws std::invalid_argument when the per-element arrays differ in size or hold NaN, infinity, negative
+// values or zero areas: the solvers rely on finite, non-negative input. Values that make the system
+// unsolvable (ρ ≥ 1, rows summing over 1) pass here; the solvers report them.
+void validate_elements(const Transport& transport);
+
+// Power (radiosity × area) per channel, for every transport alike. `escaped` is the light leaving elements
+// that reaches no element: Σ A_i B_i (1 − reach_i). `absorbed` is Σ A_i (1 − ρ_i) H_i with H = gather(B).
+// At convergence emitted = absorbed + escaped, to within the transport's reciprocity error (the derivation
+// uses A_i F_ij = A_j F_ji); in a closed scene nothing escapes.
+struct EnergyBalance {
+    glm::dvec3 emitted{0.0};
+    glm::dvec3 absorbed{0.0};
+    glm::dvec3 escaped{0.0};
+
+    glm::dvec3 imbalance() const { return emitted - absorbed - escaped; }
+};
+
+EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dvec3> radiosity);
+
+}  // namespace rad

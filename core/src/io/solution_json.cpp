@@ -1,0 +1,106 @@
+#include "rad/io/solution_json.hpp"
+
+#include "rad/io/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <stdexcept>
+
+namespace rad {
+
+namespace {
+
+using nlohmann::json;
+
+json triple(const glm::dvec3& v) {
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+        throw std::invalid_argument("solution JSON: a value is not finite");
+    }
+    return json::array({v.x, v.y, v.z});
+}
+
+json patch_json(const Scene& scene, const PatchMesh& patches, const Transport& transport,
+                std::span<const glm::dvec3> radiosity, std::size_t i) {
+    const Patch& patch = patches.patches[i];
+    const Surface& surface = scene.surfaces.at(patch.surface);
+    return json{{"surface", surface.name},
+                {"surface_index", patch.surface},
+                {"material", surface.material.name},
+                {"area", patch.area},
+                // The share other geometry does not cover; radiosity is that of this exposed part.
+                {"exposed", transport.area[i] / patch.area},
+                {"centroid", triple(patch.centroid)},
+                {"normal", triple(patch.normal)},
+                {"reflectance", triple(transport.reflectance[i])},
+                {"emission", triple(transport.emission[i])},
+                {"radiosity", triple(radiosity[i])},
+                {"radiance", triple(radiosity[i] / std::numbers::pi)}};
+}
+
+json transport_json(const TransportReport& t) {
+    json out{{"kind", t.kind},
+             {"interaction_name", t.interaction_name},
+             {"elements", t.elements},
+             {"interactions", t.interactions},
+             {"memory_bytes", t.memory_bytes},
+             {"rays", t.rays},
+             {"seconds", t.seconds},
+             {"form_factor_passes", t.form_factor_passes},
+             {"notes", t.notes}};
+    for (const TransportDetail& d : t.details) {
+        if (!std::isfinite(d.value))
+            throw std::invalid_argument("solution JSON: " + d.name + " is not finite");
+        out[d.name] = d.value;
+    }
+    return out;
+}
+
+json stats_json(const Transport& transport, const SolveStatistics& stats) {
+    return json{
+        {"patches", transport.size()},
+        {"nonzeros", stats.transport.interactions},
+        {"iterations", stats.iterations},
+        {"residual", stats.residual},
+        {"converged", stats.converged},
+        {"seconds",
+         {{"mesh", stats.mesh_seconds},
+          {"form_factors", stats.form_factor_seconds},
+          {"solve", stats.solve_seconds}}},
+        {"peak_memory_bytes", stats.peak_memory_bytes},
+        {"solver", stats.solver},
+        {"status", stats.status},
+        {"status_message", stats.status_message},
+        {"tolerance", stats.tolerance},
+        {"energy",
+         {{"emitted", triple(stats.energy.emitted)},
+          {"absorbed", triple(stats.energy.absorbed)},
+          {"escaped", triple(stats.energy.escaped)}}},
+        {"transport", transport_json(stats.transport)},
+    };
+}
+
+}  // namespace
+
+void write_solution_json(const std::string& path, const Scene& scene, const PatchMesh& patches,
+                         const Transport& transport, std::span<const glm::dvec3> radiosity,
+                         const SolveStatistics& stats) {
+    if (patches.size() != transport.size() || radiosity.size() != transport.size()) {
+        throw std::invalid_argument("solution JSON: patches, transport and radiosity differ in size");
+    }
+    json document;
+    json& patch_list = document["patches"] = json::array();
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+        patch_list.push_back(patch_json(scene, patches, transport, radiosity, i));
+    }
+    document["stats"] = stats_json(transport, stats);
+    if (!std::isfinite(stats.residual))
+        throw std::invalid_argument("solution JSON: the residual is not finite");
+    write_file_atomically(path, document.dump() + "\n");
+}
+
+}  // namespace rad

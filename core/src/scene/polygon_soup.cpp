@@ -1,0 +1,132 @@
+#include "rad/scene/polygon_soup.hpp"
+
+#include <OpenMesh/Core/System/omstream.hh>
+#include <glm/geometric.hpp>
+#include <optional>
+#include <unordered_map>
+
+#include "rad/geometry/polygon.hpp"
+#include "rad/util/error.hpp"
+#include "scene/coplanar_emitters.hpp"
+
+namespace rad {
+
+namespace {
+
+// Below this fraction of the scene's squared size a polygon has no area worth a patch.
+constexpr double kZeroAreaFraction = 1e-14;
+
+// Builds one surface's OpenMesh mesh, sharing vertices between faces where OpenMesh can keep the mesh
+// manifold and giving a face its own copies of the vertices where it cannot.
+class SurfaceBuilder {
+  public:
+    explicit SurfaceBuilder(const PolygonSoup& soup) : soup_(soup) {}
+
+    void add_face(const std::vector<std::uint32_t>& soup_vertices) {
+        std::vector<SurfaceMesh::VertexHandle> handles;
+        handles.reserve(soup_vertices.size());
+        for (std::uint32_t v : soup_vertices) handles.push_back(shared_vertex(v));
+        if (add_quietly(handles)) return;
+        for (std::size_t i = 0; i < handles.size(); ++i) handles[i] = new_vertex(soup_vertices[i]);
+        add_quietly(handles);
+    }
+
+    SurfaceMesh take() { return std::move(mesh_); }
+    bool empty() const { return mesh_.n_faces() == 0; }
+
+  private:
+    // OpenMesh reports a non-manifold face on its error stream; we handle it, so keep the terminal clean.
+    bool add_quietly(const std::vector<SurfaceMesh::VertexHandle>& handles) {
+        omerr().disable();
+        const bool added = mesh_.add_face(handles).is_valid();
+        omerr().enable();
+        return added;
+    }
+    SurfaceMesh::VertexHandle new_vertex(std::uint32_t v) {
+        const glm::dvec3& p = soup_.positions[v];
+        return mesh_.add_vertex(SurfaceMesh::Point(p.x, p.y, p.z));
+    }
+    SurfaceMesh::VertexHandle shared_vertex(std::uint32_t v) {
+        auto [it, inserted] = shared_.try_emplace(v);
+        if (inserted) it->second = new_vertex(v);
+        return it->second;
+    }
+
+    const PolygonSoup& soup_;
+    SurfaceMesh mesh_;
+    std::unordered_map<std::uint32_t, SurfaceMesh::VertexHandle> shared_;
+};
+
+// Drops repeated consecutive corners (same index or same position), as in "f 1 2 2 3".
+std::vector<std::uint32_t> without_repeats(const PolygonSoup& soup, const std::vector<std::uint32_t>& in) {
+    std::vector<std::uint32_t> out;
+    out.reserve(in.size());
+    for (std::uint32_t v : in) {
+        if (!out.empty() && soup.positions[out.back()] == soup.positions[v]) continue;
+        out.push_back(v);
+    }
+    while (out.size() > 1 && soup.positions[out.front()] == soup.positions[out.back()]) out.pop_back();
+    return out;
+}
+
+std::vector<glm::dvec3> corner_positions(const PolygonSoup& soup, const std::vector<std::uint32_t>& idx) {
+    std::vector<glm::dvec3> out;
+    out.reserve(idx.size());
+    for (std::uint32_t v : idx) out.push_back(soup.positions[v]);
+    return out;
+}
+
+double scene_size_squared(const PolygonSoup& soup) {
+    BoundingBox box;
+    for (const auto& p : soup.positions) box.extend(p);
+    const double d = glm::length(box.extent());
+    return d * d;
+}
+
+}  // namespace
+
+Scene build_scene(const PolygonSoup& input) {
+    std::vector<std::string> lift_warnings;
+    const std::optional<PolygonSoup> lifted = lift_coplanar_emitters(input, lift_warnings);
+    const PolygonSoup& soup = lifted ? *lifted : input;
+    const double min_area = kZeroAreaFraction * scene_size_squared(soup);
+    std::vector<SurfaceBuilder> builders(soup.groups.size(), SurfaceBuilder(soup));
+    std::size_t dropped = 0;
+
+    for (const PolygonSoup::Polygon& polygon : soup.polygons) {
+        const std::vector<std::uint32_t> corners = without_repeats(soup, polygon.vertices);
+        const std::vector<glm::dvec3> points = corner_positions(soup, corners);
+        if (corners.size() < 3 || !(polygon_area(points) > min_area)) {
+            ++dropped;
+            continue;
+        }
+        SurfaceBuilder& builder = builders[polygon.group];
+        if (is_planar_convex(points)) {
+            builder.add_face(corners);
+            continue;
+        }
+        for (const auto& t : triangulate_polygon(points)) {
+            const std::vector<std::uint32_t> tri{corners[t[0]], corners[t[1]], corners[t[2]]};
+            if (polygon_area(corner_positions(soup, tri)) > min_area) builder.add_face(tri);
+        }
+    }
+
+    Scene scene;
+    scene.source = soup.source;
+    for (std::size_t g = 0; g < soup.groups.size(); ++g) {
+        if (builders[g].empty()) continue;
+        scene.surfaces.push_back(Surface{soup.groups[g].name, soup.groups[g].material, builders[g].take()});
+    }
+    if (dropped > 0) {
+        scene.warnings.push_back(soup.source + ": dropped " + std::to_string(dropped) +
+                                 " face(s) with zero area or fewer than three distinct corners");
+    }
+    scene.warnings.insert(scene.warnings.end(), lift_warnings.begin(), lift_warnings.end());
+    if (scene.surfaces.empty()) throw InputError(soup.source + ": the scene has no faces with area");
+    if (!has_emitter(scene)) {
+        scene.warnings.push_back(soup.source + ": no material emits light (Ke), so the scene will be black");
+    }
+    return scene;
+}
+
+}  // namespace rad

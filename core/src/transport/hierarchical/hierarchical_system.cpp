@@ -1,0 +1,173 @@
+// Building a HierarchicalSystem: the first links between base patches, rounds of refinement and solving,
+// and the leaves as patches.
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <string>
+
+#include "rad/transport/hierarchical/hierarchical_radiosity.hpp"
+#include "rad/util/error.hpp"
+#include "rad/util/stopwatch.hpp"
+#include "ray/coverage.hpp"
+#include "transport/hierarchical/hierarchical_refine.hpp"
+#include "transport/uniform/form_factors_hemisphere.hpp"
+#include "util/luminance.hpp"
+
+namespace rad {
+
+namespace {
+
+// Every pair of base patches is a first link: beyond this many the n² pairs alone would not fit.
+constexpr std::size_t kMaxBasePatches = 20'000;
+// Jacobi steps between rounds: the oracle needs the radiosity roughly, not converged.
+constexpr int kRoundSteps = 64;
+constexpr double kRoundTolerance = 1e-3;
+
+void check_options(const HierarchicalOptions& o, std::size_t base_patches) {
+    if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance))
+        throw SettingError("refine_tolerance", "must be a positive number");
+    if (!(o.min_patch_size >= 0.0) || !std::isfinite(o.min_patch_size))
+        throw SettingError("min_patch_size", "must be a non-negative number");
+    if (o.visibility_rays < 1 || o.visibility_rays > 4096)
+        throw SettingError("visibility_rays", "shadow rays per hierarchical link must lie in [1, 4096]");
+    if (base_patches > kMaxBasePatches) {
+        throw SettingError("subdivision", "hierarchical links every pair of base patches, and " +
+                                              std::to_string(base_patches) + " base patches are more than " +
+                                              std::to_string(kMaxBasePatches) +
+                                              ": give a larger {patch_size}");
+    }
+}
+
+// Could the two see each other at all: some corner of each strictly in front of the other's plane?
+bool may_face(const PatchMesh& base, std::uint32_t a, std::uint32_t b) {
+    auto in_front = [&](std::uint32_t of, std::uint32_t seen) {
+        const Patch& p = base.patches[of];
+        const double tiny = 1e-9 * std::sqrt(p.area);
+        for (int k = 0; k < base.corner_count(seen); ++k)
+            if (glm::dot(p.normal, base.points[base.corners[seen][k]] - p.centroid) > tiny) return true;
+        return false;
+    };
+    return in_front(a, b) && in_front(b, a);
+}
+
+std::vector<LinkCandidate> first_candidates(const PatchMesh& base) {
+    std::vector<LinkCandidate> candidates;
+    const auto n = static_cast<std::uint32_t>(base.size());
+    for (std::uint32_t r = 0; r < n; ++r)
+        for (std::uint32_t s = 0; s < n; ++s)
+            if (r != s && may_face(base, r, s)) candidates.push_back({r, s});
+    return candidates;
+}
+
+void index_links(HierarchicalSystem& system) {
+    std::sort(system.links.begin(), system.links.end(),
+              [](const HierarchicalLink& a, const HierarchicalLink& b) {
+                  return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
+              });
+    system.receiver_runs.clear();
+    for (std::size_t l = 0; l < system.links.size(); ++l) {
+        if (l == 0 || system.links[l].receiver != system.links[l - 1].receiver)
+            system.receiver_runs.push_back(static_cast<std::uint32_t>(l));
+    }
+    system.receiver_runs.push_back(static_cast<std::uint32_t>(system.links.size()));
+}
+
+// Jacobi steps from `radiosity` until the update's power falls below kRoundTolerance of the emitted power.
+void solve_roughly(const HierarchicalSystem& system, std::vector<glm::dvec3>& radiosity) {
+    std::vector<glm::dvec3> next(radiosity.size());
+    double emitted = 0.0;
+    for (std::uint32_t e = 0; e < system.tree.base_size(); ++e)
+        emitted += system.tree[e].shape.area * luminance(system.emission[e]);
+    for (int step = 0; step < kRoundSteps; ++step) {
+        gather_push_pull(system, radiosity, next);
+        double change = 0.0;
+        for (std::uint32_t e = 0; e < system.tree.base_size(); ++e)
+            change += system.tree[e].shape.area * std::abs(luminance(next[e] - radiosity[e]));
+        radiosity.swap(next);
+        if (!(change > kRoundTolerance * emitted)) break;
+    }
+}
+
+// The error a link may leave, as an absolute radiosity: tolerance × the mean radiosity over the base patches,
+// estimated before any solve as the mean emission / (1 − mean reflectance) (exact for a closed furnace).
+double link_epsilon(const HierarchicalSystem& system, std::span<const glm::dvec3> radiosity, double tolerance,
+                    bool solved) {
+    double area = 0.0, b = 0.0, rho = 0.0;
+    for (std::uint32_t e = 0; e < system.tree.base_size(); ++e) {
+        const double a = system.tree[e].shape.area;
+        area += a;
+        b += a * luminance(radiosity[e]);
+        rho += a * luminance(system.reflectance[e]);
+    }
+    if (!(area > 0.0)) return 0.0;
+    const double mean = solved ? b / area : b / area / std::max(1e-3, 1.0 - rho / area);
+    return tolerance * mean;
+}
+
+void finish_leaves(HierarchicalSystem& system) {
+    system.leaves = system.tree.leaves();
+    system.leaf_patches = system.tree.leaf_mesh(system.leaves);
+}
+
+}  // namespace
+
+std::size_t HierarchicalSystem::memory_bytes() const {
+    return tree.memory_bytes() + links.capacity() * sizeof(HierarchicalLink) +
+           receiver_runs.capacity() * sizeof(std::uint32_t) +
+           (reflectance.capacity() + emission.capacity()) * sizeof(glm::dvec3) +
+           leaves.capacity() * sizeof(std::uint32_t) +
+           (exposed_share.capacity() + leaf_scale.capacity()) * sizeof(float);
+}
+
+std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene, const PatchMesh& base,
+                                                              const HierarchicalOptions& options,
+                                                              HierarchicalReport* report_out,
+                                                              Progress* progress) {
+    HierarchicalOptions o = options;
+    if (o.visibility_rays == 0) o.visibility_rays = 16;
+    check_options(o, base.size());
+    auto system = std::make_unique<HierarchicalSystem>(base);
+    for (const Patch& p : base.patches) {
+        const Material& material = scene.surfaces[p.surface].material;
+        system->reflectance.push_back(material.reflectance);
+        system->emission.push_back(material.emitted_radiosity());
+    }
+    HierarchicalReport report;
+    report.base_patches = base.size();
+    double longest = 0.0;
+    for (std::uint32_t e = 0; e < base.size(); ++e) longest = std::max(longest, system->tree.longest_edge(e));
+    report.min_patch_size = o.min_patch_size > 0.0 ? o.min_patch_size : longest / 64.0;
+
+    const RayScene rays(base);
+    std::vector<double> covered(base.size());
+    measure_coverage(base, rays, o.seed, covered);
+    for (double c : covered) system->exposed_share.push_back(static_cast<float>(1.0 - c));
+    const LinkEstimator estimator(system->tree, system->exposed_share, rays, ray_offset(base),
+                                  o.visibility_rays, o.seed);
+    LinkRefiner refiner(*system, estimator, o, report.min_patch_size, report, progress);
+    for (int round = 0; round < std::max(1, o.rounds); ++round) {
+        const Stopwatch refine_clock;
+        refiner.set_epsilon(link_epsilon(*system, refiner.radiosity(), o.tolerance, round > 0));
+        if (progress) progress->begin("linking elements, round " + std::to_string(round + 1), 0);
+        const bool changed =
+            round == 0 ? (refiner.refine(first_candidates(base)), true) : refiner.refine_again();
+        report.refine_seconds += refine_clock.seconds();
+        if (!changed) break;
+        ++report.rounds;
+        index_links(*system);
+        normalize_leaf_form_factors(*system, refiner.measure_reaching());
+        const Stopwatch solve_clock;
+        if (progress) progress->begin("solving between rounds", 0);
+        solve_roughly(*system, refiner.radiosity());
+        report.solve_seconds += solve_clock.seconds();
+    }
+    finish_leaves(*system);
+    report.elements = system->tree.size();
+    report.leaves = system->leaves.size();
+    report.links = system->links.size();
+    report.memory_bytes = system->memory_bytes();
+    if (report_out) *report_out = report;
+    return system;
+}
+
+}  // namespace rad

@@ -1,0 +1,96 @@
+#include "rad/transport/scene_transport.hpp"
+
+#include <string>
+
+#include "rad/transport/uniform/uniform_transport.hpp"
+
+namespace rad {
+
+namespace {
+
+SceneTransport uniform(const Scene& scene, const PatchMesh& base, const TransportSettings& settings,
+                       Progress* progress) {
+    FormFactorReport report;
+    FormFactorMatrix form_factors = compute_form_factors(base, settings.form_factors, &report, progress);
+    SceneTransport out;
+    out.transport = std::make_unique<UniformTransport>(
+        make_uniform_transport(scene, base, std::move(form_factors), report));
+    out.patches = &base;
+    return out;
+}
+
+std::string pass_sizes(const AdaptiveReport& report) {
+    std::string sizes;
+    for (const AdaptivePass& p : report.passes)
+        sizes += (sizes.empty() ? "" : " -> ") + std::to_string(p.patches);
+    return sizes;
+}
+
+SceneTransport adaptive(const Scene& scene, const PatchMesh& base, const TransportSettings& settings,
+                        Progress* progress) {
+    AdaptiveResult result = subdivide_adaptively(scene, base, settings.form_factors, settings.pass_method,
+                                                 settings.pass_solver, settings.adaptive, progress);
+    const AdaptiveReport& a = result.report;
+    auto transport = std::make_unique<UniformTransport>(std::move(result.system));
+    transport->kind = "adaptive";
+    transport->form_factor_passes = a.passes.size();
+    transport->form_factor_report.seconds = a.seconds;  // every pass, not only the last one's form factors
+    transport->details = {{"passes", static_cast<double>(a.passes.size())},
+                          {"shadow_sources", static_cast<double>(a.shadow_sources)}};
+    transport->notes = std::to_string(a.passes.size()) + " passes (" + pass_sizes(a) +
+                       " patches), stopped: " + std::string(adaptive_stop_name(a.stop));
+    SceneTransport out;
+    out.transport = std::move(transport);
+    out.refined_patches = std::make_unique<const PatchMesh>(std::move(result.patches));
+    out.patches = out.refined_patches.get();
+    return out;
+}
+
+SceneTransport hierarchical(const Scene& scene, const PatchMesh& base, const TransportSettings& settings,
+                            Progress* progress) {
+    std::unique_ptr<HierarchicalTransport> transport =
+        make_hierarchical_transport(scene, base, settings.hierarchical, progress);
+    SceneTransport out;
+    out.patches = &transport->system().leaf_patches;
+    out.transport = std::move(transport);
+    return out;
+}
+
+}  // namespace
+
+std::string_view subdivision_name(Subdivision subdivision) {
+    switch (subdivision) {
+        case Subdivision::uniform:
+            return "uniform";
+        case Subdivision::adaptive:
+            return "adaptive";
+        case Subdivision::hierarchical:
+            return "hierarchical";
+    }
+    return "uniform";
+}
+
+const std::vector<Subdivision>& all_subdivisions() {
+    static const std::vector<Subdivision> all = {Subdivision::uniform, Subdivision::adaptive,
+                                                 Subdivision::hierarchical};
+    return all;
+}
+
+bool has_matrix(Subdivision subdivision) {
+    return subdivision != Subdivision::hierarchical;
+}
+
+SceneTransport build_scene_transport(const Scene& scene, const PatchMesh& base,
+                                     const TransportSettings& settings, Progress* progress) {
+    switch (settings.subdivision) {
+        case Subdivision::adaptive:
+            return adaptive(scene, base, settings, progress);
+        case Subdivision::hierarchical:
+            return hierarchical(scene, base, settings, progress);
+        case Subdivision::uniform:
+            break;
+    }
+    return uniform(scene, base, settings, progress);
+}
+
+}  // namespace rad

@@ -1,0 +1,61 @@
+#include "rad/transport/transport.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rad {
+
+namespace {
+
+bool finite_non_negative(double v) {
+    return std::isfinite(v) && v >= 0.0;
+}
+bool finite_non_negative(const glm::dvec3& v) {
+    return finite_non_negative(v.x) && finite_non_negative(v.y) && finite_non_negative(v.z);
+}
+
+}  // namespace
+
+double TransportReport::detail(const std::string& name, double fallback) const {
+    for (const TransportDetail& d : details)
+        if (d.name == name) return d.value;
+    return fallback;
+}
+
+void validate_elements(const Transport& transport) {
+    const std::size_t n = transport.size();
+    if (n == 0) throw std::invalid_argument("radiosity system: no patches");
+    if (transport.reflectance.size() != n || transport.emission.size() != n) {
+        throw std::invalid_argument("radiosity system: area, reflectance and emission differ in size");
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!finite_non_negative(transport.area[i]) || transport.area[i] == 0.0) {
+            throw std::invalid_argument("radiosity system: patch " + std::to_string(i) +
+                                        " has no finite area");
+        }
+        if (!finite_non_negative(transport.reflectance[i]) || !finite_non_negative(transport.emission[i])) {
+            throw std::invalid_argument("radiosity system: patch " + std::to_string(i) +
+                                        " has a negative or non-finite reflectance or emission");
+        }
+    }
+}
+
+EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dvec3> radiosity) {
+    if (radiosity.size() != transport.size()) {
+        throw std::invalid_argument("energy_balance: the radiosity has the wrong number of patches");
+    }
+    std::vector<glm::dvec3> arriving(transport.size());
+    transport.gather(radiosity, arriving);
+    const std::vector<double> reach = transport.reach();
+    EnergyBalance balance;
+    for (std::size_t i = 0; i < transport.size(); ++i) {
+        const double a = transport.area[i];
+        balance.emitted += a * transport.emission[i];
+        balance.absorbed += a * (1.0 - transport.reflectance[i]) * arriving[i];
+        balance.escaped += a * (1.0 - reach[i]) * radiosity[i];
+    }
+    return balance;
+}
+
+}  // namespace rad

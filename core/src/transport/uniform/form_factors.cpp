@@ -1,0 +1,103 @@
+#include "rad/transport/uniform/form_factors.hpp"
+
+#include <chrono>
+#include <limits>
+
+#include "rad/ray/ray_scene.hpp"
+#include "rad/util/error.hpp"
+#include "ray/coverage.hpp"
+#include "transport/uniform/form_factors_analytic.hpp"
+#include "transport/uniform/form_factors_diagnostics.hpp"
+#include "transport/uniform/form_factors_emitter_columns.hpp"
+#include "transport/uniform/form_factors_exposed.hpp"
+#include "transport/uniform/form_factors_hemisphere.hpp"
+#include "transport/uniform/form_factors_memory.hpp"
+#include "transport/uniform/form_factors_rows.hpp"
+
+namespace rad {
+
+namespace {
+
+int rays_for(const FormFactorOptions& options) {
+    if (options.rays < 0) throw SettingError("rays", "must be a positive number of rays");
+    if (options.rays > 0) return options.rays;
+    return options.method == FormFactorMethod::hemisphere ? kDefaultHemisphereRays : kDefaultAnalyticRays;
+}
+
+void check_patch_count(const PatchMesh& patches) {
+    // Column indices are 32-bit and RayHit reserves the top two values.
+    if (patches.size() >= std::numeric_limits<std::uint32_t>::max() - 2) {
+        throw SettingError("patch_size", "form factors: too many patches (" + std::to_string(patches.size()) +
+                                             "); use a larger {patch_size}");
+    }
+}
+
+void fill_report(FormFactorReport& report, const FormFactorMatrix& matrix,
+                 const FormFactorDiagnostics& final_d, const RowStats& stats) {
+    report.memory_bytes = matrix.memory_bytes();
+    report.nonzeros = matrix.nonzeros();
+    report.rays = stats.rays;
+    report.escaped_ray_fraction = stats.hemisphere_rays > 0 ? static_cast<double>(stats.escaped_rays) /
+                                                                  static_cast<double>(stats.hemisphere_rays)
+                                                            : 0.0;
+    report.max_reciprocity_error = final_d.max_reciprocity_error;
+    report.mean_reciprocity_error = final_d.mean_reciprocity_error;
+    report.min_row_sum = final_d.min_row_sum;
+    report.max_row_sum = final_d.max_row_sum;
+}
+
+// A seed of its own for the emitter columns' shadow rays, so they share no random numbers with the hemisphere
+// rays.
+constexpr std::uint64_t kEmitterSeedSalt = 0x5eed'e417'7e55'0001ull;
+
+RowFunction hemisphere_rows_with_emitters(const PatchMesh& patches, const RayScene& scene, int rays,
+                                          const FormFactorOptions& options, std::vector<double>& covered) {
+    const std::vector<std::uint32_t> emitters = emitting_patches(patches, options.emitting_surfaces);
+    const int shadow_rays = emitter_shadow_rays(emitters.size(), rays);
+    if (shadow_rays == 0) return hemisphere_rows(patches, scene, rays, options.seed, covered);
+    RowFunction hemisphere =
+        hemisphere_rows(patches, scene, rays, options.seed, covered, column_flags(patches.size(), emitters));
+    return merged_rows(std::move(hemisphere), analytic_rows(patches, scene, shadow_rays,
+                                                            options.seed ^ kEmitterSeedSalt, {}, emitters));
+}
+
+}  // namespace
+
+FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactorOptions& options,
+                                      FormFactorReport* report, Progress* progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const int rays = rays_for(options);
+    check_patch_count(patches);
+    check_memory_budget(patches, options, rays);
+
+    if (progress) progress->begin("form factors", patches.size());
+    RowStats stats;
+    FormFactorMatrix matrix;
+    std::vector<double> covered(patches.size(), 0.0);
+    if (patches.size() > 0) {
+        const RayScene scene(patches);
+        const RowFunction row = options.method == FormFactorMethod::hemisphere
+                                    ? hemisphere_rows_with_emitters(patches, scene, rays, options, covered)
+                                    : analytic_rows(patches, scene, rays, options.seed);
+        matrix = assemble_rows(patches.size(), row, stats, progress);
+        // The analytic rows' shadow rays do not tell covered points apart; probe every patch (a small cost
+        // beside its pairs).
+        if (options.method == FormFactorMethod::analytic)
+            measure_coverage(patches, scene, options.seed, covered);
+    }
+
+    const FormFactorDiagnostics estimate = diagnose(matrix, patches);
+    if (options.enforce_reciprocity) matrix = enforce_reciprocity(matrix, patches);
+    if (!covered.empty()) expose_rows(matrix, covered);
+    if (options.normalize_rows) normalize_rows(matrix);
+    if (report) {
+        report->estimate = estimate;
+        const bool changed = options.enforce_reciprocity || options.normalize_rows;
+        fill_report(*report, matrix, changed ? diagnose(matrix, patches) : estimate, stats);
+        report->covered_area_fraction = covered_area_fraction(patches, covered);
+        report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    return matrix;
+}
+
+}  // namespace rad
