@@ -12,8 +12,8 @@
 #include "cli/commands.hpp"
 #include "cli/gl_platform_option.hpp"
 #include "gl/headless_context.hpp"
-#include "io/image_io.hpp"
 #include "rad/io/atomic_file.hpp"
+#include "rad/io/image_file.hpp"
 #include "rad/util/error.hpp"
 
 namespace rad {

@@ -83,13 +83,6 @@ PatchReference patch_reference(const LoadedScene& loaded, const BenchPlan& plan)
     return reference;
 }
 
-ImageView view_of(const RadianceImage& image) {
-    return {image.width, image.height, image.pixels};
-}
-ImageView view_of(const ReferenceImage& image) {
-    return {image.width, image.height, image.pixels};
-}
-
 class SceneSweep {
   public:
     SceneSweep(const std::string& scene, const BenchPlan& plan, BenchResults& results,
@@ -102,7 +95,7 @@ class SceneSweep {
         camera_ = scene_camera(base.scene);
         reference_image_ =
             render_reference(base, plan_.image_size, plan_.reference_spp, plan_.reference_spp * 7919);
-        const double noise = block_relative_noise(view_of(reference_image_), reference_image_.standard_error);
+        const double noise = block_relative_noise(reference_image_.image, reference_image_.standard_error);
         results_.notes.push_back(scene_ + ": reference image " + std::to_string(plan_.image_size) + "² at " +
                                  std::to_string(plan_.reference_spp) + " paths per pixel, " +
                                  format("%.1f s", reference_image_.stats.seconds) +
@@ -185,9 +178,9 @@ class SceneSweep {
         row.mesh_seconds = pipeline.seconds().mesh;
         row.form_factor_seconds = pipeline.seconds().form_factors;
         row.solver_error = row.total_error = row.reference_noise = std::numeric_limits<double>::quiet_NaN();
-        const RadianceImage image =
+        const Image image =
             SceneImageRenderer(pipeline, false).render(camera_, plan_.image_size, plan_.image_size);
-        row.image_error = block_relative_error(view_of(image), view_of(reference_image_));
+        row.image_error = block_relative_error(image, reference_image_.image);
         log_(format("%8.3f s  ", row.seconds()) + row.scene + "  " + method + "  " +
              std::to_string(row.patches) + " leaves  " + std::to_string(row.links) + " links" +
              format("  image error %.2f %%", 100 * row.image_error));
@@ -222,10 +215,10 @@ class SceneSweep {
         row.total_error = relative_rms_difference(pipeline.loaded().patches, whole, reference.radiosity);
         row.reference_noise = reference.noise;
         const auto render_start = std::chrono::steady_clock::now();
-        const RadianceImage image =
+        const Image image =
             SceneImageRenderer(pipeline, false).render(camera_, plan_.image_size, plan_.image_size);
         row.render_seconds = seconds_since(render_start);
-        row.image_error = block_relative_error(view_of(image), view_of(reference_image_));
+        row.image_error = block_relative_error(image, reference_image_.image);
         last_image_ = image;
         return row;
     }
@@ -234,9 +227,7 @@ class SceneSweep {
     void keep_images() {
         const std::string name = scene_.substr(scene_.find(':') + 1);
         results_.images.push_back({name + "-radiosity.pfm", last_image_});
-        results_.images.push_back(
-            {name + "-path-traced.pfm",
-             {reference_image_.width, reference_image_.height, reference_image_.pixels}});
+        results_.images.push_back({name + "-path-traced.pfm", reference_image_.image});
     }
 
     // The path tracer's error at `spp` paths per pixel: against the reference at the reference's size,
@@ -244,9 +235,9 @@ class SceneSweep {
     // one image's error is the difference over √2).
     double path_tracer_error(const ReferenceImage& image, const LoadedScene& loaded, int size,
                              int spp) const {
-        if (size == plan_.image_size) return block_relative_error(view_of(image), view_of(reference_image_));
+        if (size == plan_.image_size) return block_relative_error(image.image, reference_image_.image);
         const ReferenceImage twin = render_reference(loaded, size, spp, 1'000'003ull * spp + 17);
-        return block_relative_error(view_of(image), view_of(twin)) / std::sqrt(2.0);
+        return block_relative_error(image.image, twin.image) / std::sqrt(2.0);
     }
 
     // The median time of a frame from a new viewpoint, drawn into a framebuffer of `size`² that exists
@@ -307,7 +298,7 @@ class SceneSweep {
     double default_size_ = 0.0;
     Camera camera_;
     ReferenceImage reference_image_;
-    RadianceImage last_image_;  // of the last run
+    Image last_image_;  // of the last run
 };
 
 }  // namespace

@@ -7,7 +7,7 @@
 
 #include "bench/bench_plan.hpp"
 #include "bench/path_tracer_search.hpp"
-#include "io/image_io.hpp"
+#include "rad/io/image.hpp"
 #include "rad/transport/uniform/form_factors.hpp"
 #include "rad/util/progress.hpp"
 
@@ -57,7 +57,7 @@ struct PathTracerComparison {
 // An image worth keeping for a person to look at: the default run's and the path tracer's, per scene.
 struct NamedImage {
     std::string name;  // a file name without folder: "cornell-radiosity.pfm"
-    RadianceImage image;
+    Image image;
 };
 
 struct BenchResults {

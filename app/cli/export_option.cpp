@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "cli/number_checks.hpp"
-#include "cli/output_folder.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
+#include "rad/io/output_path.hpp"
 #include "rad/io/scene_export.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/file_names.hpp"
@@ -33,7 +33,7 @@ void check_export_paths(const std::vector<std::string>& paths) {
                              (ext.empty() ? "no extension" : "unknown export format '" + ext + "'") +
                              " (use .ply, .gltf or .glb)");
         }
-        require_output_folder("--export", path);
+        require_output_folder("export_path", path);
     }
 }
 

@@ -8,7 +8,7 @@
 namespace rad {
 
 std::string flag_of(std::string_view setting) {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 12> flags = {{
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 15> flags = {{
         {"patch_size", "--patch-size"},
         {"solver", "--solver"},
         {"tolerance", "--tol"},
@@ -21,6 +21,9 @@ std::string flag_of(std::string_view setting) {
         {"min_patch_size", "--min-patch-size"},
         {"subdivision", "--subdivision"},
         {"seed", "--seed"},
+        {"image_path", "--out"},
+        {"json_path", "--json"},
+        {"export_path", "--export"},
     }};
     for (const auto& [name, flag] : flags)
         if (name == setting) return std::string(flag);

@@ -15,9 +15,9 @@
 #include "cli/number_checks.hpp"
 #include "gl/headless_context.hpp"
 #include "gl/scene_image_renderer.hpp"
-#include "io/image_io.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
 #include "rad/camera/camera_view.hpp"
+#include "rad/io/image_file.hpp"
 #include "rad/util/error.hpp"
 
 namespace rad {
@@ -94,7 +94,7 @@ int run_render(RenderOptions options) {
     }
     const auto start = std::chrono::steady_clock::now();
     const HeadlessContext context(options.gl_platform);
-    const RadianceImage image =
+    const Image image =
         SceneImageRenderer(pipeline, options.outline).render(camera, options.width, options.height);
     const double render_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

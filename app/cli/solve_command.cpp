@@ -10,9 +10,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/export_option.hpp"
-#include "cli/output_folder.hpp"
 #include "cli/progress_bar.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
+#include "rad/io/output_path.hpp"
 #include "rad/io/solution_json.hpp"
 #include "rad/util/error.hpp"
 
@@ -92,7 +92,7 @@ SolveStatistics statistics(const RadiosityPipeline& pipeline) {
 }
 
 int run_solve(const SolveCommandOptions& options) {
-    require_output_folder("--json", options.json_path);
+    require_output_folder("json_path", options.json_path);
     check_export_paths(options.exports);
     RadiosityPipeline pipeline(options.pipeline);
     {

@@ -21,10 +21,10 @@ void SceneImageRenderer::refresh_colours() {
     renderer_.update_colours(pipeline_.vertex_radiance());
 }
 
-RadianceImage SceneImageRenderer::render(const Camera& camera, int width, int height) const {
+Image SceneImageRenderer::render(const Camera& camera, int width, int height) const {
     const OffscreenTarget target(width, height);
     draw(camera, target);
-    return RadianceImage{width, height, target.read_pixels()};
+    return Image{width, height, target.read_pixels()};
 }
 
 void SceneImageRenderer::draw_frame(const Camera& camera, const OffscreenTarget& target) const {

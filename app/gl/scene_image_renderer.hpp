@@ -2,8 +2,8 @@
 
 #include "gl/offscreen_target.hpp"
 #include "gl/renderer.hpp"
-#include "io/image_io.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
+#include "rad/io/image.hpp"
 
 namespace rad {
 
@@ -15,7 +15,7 @@ class SceneImageRenderer {
     SceneImageRenderer(const RadiosityPipeline& pipeline, bool outline);
 
     void refresh_colours();
-    RadianceImage render(const Camera& camera, int width, int height) const;
+    Image render(const Camera& camera, int width, int height) const;
     // Draws one frame from `camera` into `target` and waits until it is drawn: what a further viewpoint
     // costs a viewer, whose framebuffer exists already and is shown rather than read back.
     void draw_frame(const Camera& camera, const OffscreenTarget& target) const;

@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "rad/camera/camera_view.hpp"
+#include "rad/io/image_file.hpp"
 #include "viewer/window_screenshot.hpp"
 
 namespace rad {

@@ -8,10 +8,10 @@
 
 namespace rad {
 
-RadianceImage read_window_image(int width, int height) {
+Image read_window_image(int width, int height) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
-    return RadianceImage{width, height, read_display_pixels(width, height)};
+    return Image{width, height, read_display_pixels(width, height)};
 }
 
 std::string timestamped_screenshot_path() {

@@ -2,14 +2,14 @@
 
 #include <string>
 
-#include "io/image_io.hpp"
+#include "rad/io/image.hpp"
 
 namespace rad {
 
 // The back buffer of the default framebuffer as the radiance scaled by exposure, so write_image(path, image,
 // 0) gives the PNG `radiosity render` would (L · 2^exposure, then sRGB): the viewer's shader writes sRGB
 // codes, which are decoded. Call after drawing, before swap.
-RadianceImage read_window_image(int width, int height);
+Image read_window_image(int width, int height);
 
 // radiosity-YYYYMMDD-HHMMSS.png in the working folder, for the screenshot key.
 std::string timestamped_screenshot_path();

@@ -134,9 +134,9 @@ SurfaceFactors surface_factors(const FormFactorMatrix& f, const PatchMesh& mesh)
     for (std::uint32_t i = 0; i < mesh.size(); ++i) {
         const std::uint32_t s = mesh.patches[i].surface;
         area[s] += mesh.patches[i].area;
-        for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k) {
-            out[s][mesh.patches[f.column[k]].surface] += mesh.patches[i].area * f.value[k];
-        }
+        const FormFactorRow row = f.row(i);
+        for (std::size_t k = 0; k < row.size(); ++k)
+            out[s][mesh.patches[row.columns[k]].surface] += mesh.patches[i].area * row.values[k];
     }
     for (std::size_t s = 0; s < surfaces; ++s)
         for (double& v : out[s]) v /= area[s];

@@ -45,8 +45,8 @@ inline constexpr std::array<TriangleNode, 3> kStrangFix3{{
 // three_point_ratio by the 3-point rule on its fan triangles, and otherwise by Radon's rule on fan
 // triangles split in four while their nearness exceeds split_ratio, down to max_depth levels, which bounds
 // the work where the distance is zero (patches that share an edge). On the Cornell box at 928 patches these
-// settings keep every F_ij within 0.2 % of a 7-level reference and reach the analytic.md values for single
-// patches to 0.002 %.
+// settings keep every F_ij within 0.2 % of a 7-level reference and reach the docs/analytic.md values for
+// single patches to 0.002 %.
 struct AdaptiveRule {
     double one_point_ratio = 0.1;
     double three_point_ratio = 0.5;

@@ -22,10 +22,8 @@ struct Channels {
     }
 };
 
-void check_sizes(const ImageView& image, const ImageView& reference, const ImageErrorOptions& options) {
-    const auto pixels = static_cast<std::size_t>(std::max(reference.width, 0)) *
-                        static_cast<std::size_t>(std::max(reference.height, 0));
-    if (reference.width <= 0 || reference.height <= 0 || reference.pixels.size() != pixels) {
+void check_sizes(const Image& image, const Image& reference, const ImageErrorOptions& options) {
+    if (reference.width <= 0 || reference.height <= 0 || reference.pixels.size() != reference.pixel_count()) {
         throw std::invalid_argument("image error: the reference image is empty or its size is inconsistent");
     }
     if (image.width != reference.width || image.height != reference.height ||
@@ -37,8 +35,7 @@ void check_sizes(const ImageView& image, const ImageView& reference, const Image
     }
 }
 
-std::array<double, kMaxChannels> floors(const ImageView& reference, const Channels& channels,
-                                        double fraction) {
+std::array<double, kMaxChannels> floors(const Image& reference, const Channels& channels, double fraction) {
     std::array<double, kMaxChannels> sum{};
     for (const glm::vec3& p : reference.pixels) {
         const auto v = channels.of(p);
@@ -54,7 +51,7 @@ std::array<double, kMaxChannels> floors(const ImageView& reference, const Channe
 // Calls visit(index) for each pixel of the block whose top-left pixel is (x0, y0) and returns the block's
 // pixel count (fewer at the right and bottom edges).
 template <typename Visit>
-double visit_block(const ImageView& reference, int x0, int y0, int size, Visit visit) {
+double visit_block(const Image& reference, int x0, int y0, int size, Visit visit) {
     const int x1 = std::min(x0 + size, reference.width), y1 = std::min(y0 + size, reference.height);
     for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; ++x) {
@@ -66,7 +63,7 @@ double visit_block(const ImageView& reference, int x0, int y0, int size, Visit v
 }
 
 // The relative error of one block whose top-left pixel is (x0, y0), averaged over the channels.
-double block_error(const ImageView& image, const ImageView& reference, int x0, int y0, int size,
+double block_error(const Image& image, const Image& reference, int x0, int y0, int size,
                    const Channels& channels, const std::array<double, kMaxChannels>& floor) {
     std::array<double, kMaxChannels> a{}, b{};
     const double n = visit_block(reference, x0, y0, size, [&](std::size_t index) {
@@ -85,14 +82,14 @@ double block_error(const ImageView& image, const ImageView& reference, int x0, i
 }
 
 // The expected relative error that the reference's noise alone gives one block (see block_relative_noise).
-double block_noise(const ImageView& reference, std::span<const glm::vec3> standard_error, int x0, int y0,
-                   int size, const Channels& channels, const std::array<double, kMaxChannels>& floor) {
+double block_noise(const Image& reference, const Image& standard_error, int x0, int y0, int size,
+                   const Channels& channels, const std::array<double, kMaxChannels>& floor) {
     std::array<double, kMaxChannels> mean{}, variance{};
     const double n = visit_block(reference, x0, y0, size, [&](std::size_t index) {
         const auto value = channels.of(reference.pixels[index]);
         // Channels.of is linear with non-negative weights: applied to the standard errors it adds them as
         // fully correlated.
-        const auto error = channels.of(standard_error[index]);
+        const auto error = channels.of(standard_error.pixels[index]);
         for (int c = 0; c < channels.count; ++c) {
             mean[c] += value[c];
             variance[c] += error[c] * error[c];
@@ -109,7 +106,7 @@ double block_noise(const ImageView& reference, std::span<const glm::vec3> standa
 
 // The pixel-weighted mean over blocks of block_value(x0, y0).
 template <typename BlockValue>
-double mean_over_blocks(const ImageView& reference, int size, BlockValue block_value) {
+double mean_over_blocks(const Image& reference, int size, BlockValue block_value) {
     double weighted = 0.0;
     for (int y0 = 0; y0 < reference.height; y0 += size) {
         for (int x0 = 0; x0 < reference.width; x0 += size) {
@@ -123,10 +120,11 @@ double mean_over_blocks(const ImageView& reference, int size, BlockValue block_v
 
 }  // namespace
 
-double block_relative_noise(const ImageView& reference, std::span<const glm::vec3> standard_error,
+double block_relative_noise(const Image& reference, const Image& standard_error,
                             const ImageErrorOptions& options) {
     check_sizes(reference, reference, options);
-    if (standard_error.size() != reference.pixels.size()) {
+    if (standard_error.width != reference.width || standard_error.height != reference.height ||
+        standard_error.pixels.size() != reference.pixels.size()) {
         throw std::invalid_argument("image noise: one standard error per pixel is needed");
     }
     const Channels channels{options.channels == ErrorChannels::rgb ? 3 : 1};
@@ -136,8 +134,7 @@ double block_relative_noise(const ImageView& reference, std::span<const glm::vec
     });
 }
 
-double block_relative_error(const ImageView& image, const ImageView& reference,
-                            const ImageErrorOptions& options) {
+double block_relative_error(const Image& image, const Image& reference, const ImageErrorOptions& options) {
     check_sizes(image, reference, options);
     const Channels channels{options.channels == ErrorChannels::rgb ? 3 : 1};
     const auto floor = floors(reference, channels, options.floor_fraction);
@@ -146,8 +143,7 @@ double block_relative_error(const ImageView& image, const ImageView& reference,
     });
 }
 
-double pixel_relative_error(const ImageView& image, const ImageView& reference,
-                            const ImageErrorOptions& options) {
+double pixel_relative_error(const Image& image, const Image& reference, const ImageErrorOptions& options) {
     ImageErrorOptions per_pixel = options;
     per_pixel.block_size = 1;
     return block_relative_error(image, reference, per_pixel);

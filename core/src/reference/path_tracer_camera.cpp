@@ -100,20 +100,16 @@ ReferenceImage PathTracer::render(const Camera& camera, int width, int height, i
         }
         return first_visible(context, s.rays, starts, s);
     };
-    ReferenceImage image;
-    image.width = width;
-    image.height = height;
-    const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    ReferenceImage result{filled_image(width, height), filled_image(width, height), {}};
+    const std::size_t pixels = result.image.pixel_count();
     const std::vector<Estimate> estimates =
-        path_tracing::run_paths(context, pixels, samples_per_pixel, start, image.stats, progress, "render");
-    image.pixels.resize(pixels);
-    image.standard_error.resize(pixels);
+        path_tracing::run_paths(context, pixels, samples_per_pixel, start, result.stats, progress, "render");
     for (std::size_t i = 0; i < pixels; ++i) {
-        image.pixels[i] = glm::vec3(estimates[i].mean / std::numbers::pi);
-        image.standard_error[i] = glm::vec3(estimates[i].standard_error / std::numbers::pi);
+        result.image.pixels[i] = glm::vec3(estimates[i].mean / std::numbers::pi);
+        result.standard_error.pixels[i] = glm::vec3(estimates[i].standard_error / std::numbers::pi);
     }
-    image.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-    return image;
+    result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    return result;
 }
 
 }  // namespace rad

@@ -68,9 +68,9 @@ Eigen::MatrixXd solve_dense(const Transport& transport, const ChannelGroup& grou
     const Eigen::VectorXd rho = reflectance_channel(transport, group.front());
     Eigen::MatrixXd k = Eigen::MatrixXd::Identity(n, n);
     for (Eigen::Index i = 0; i < n; ++i) {
-        for (std::uint64_t e = f.row_begin[static_cast<std::size_t>(i)]; e < f.row_begin[i + 1]; ++e) {
-            k(i, f.column[e]) -= rho(i) * static_cast<double>(f.value[e]);
-        }
+        const FormFactorRow row = f.row(static_cast<std::size_t>(i));
+        for (std::size_t e = 0; e < row.size(); ++e)
+            k(i, row.columns[e]) -= rho(i) * static_cast<double>(row.values[e]);
     }
     return Eigen::PartialPivLU<Eigen::MatrixXd>(k).solve(emission_columns(transport, group));
 }

@@ -30,10 +30,11 @@ class GaussSeidelSolver final : public SolverBase {
         for (std::size_t i = 0; i < transport_.size(); ++i) {
             glm::dvec3 current(0.0);
             glm::dvec3 earlier(0.0);
-            for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k) {
-                const double value = f.value[k];
-                current += value * solution_[f.column[k]];
-                earlier += value * before_[f.column[k]];
+            const FormFactorRow row = f.row(i);
+            for (std::size_t k = 0; k < row.size(); ++k) {
+                const double value = row.values[k];
+                current += value * solution_[row.columns[k]];
+                earlier += value * before_[row.columns[k]];
             }
             const glm::dvec3 rho = transport_.reflectance[i];
             const glm::dvec3 update = omega * (transport_.emission[i] + rho * current - before_[i]);

@@ -1,17 +1,8 @@
 #pragma once
 
-#include <glm/vec3.hpp>
-#include <span>
+#include "rad/io/image.hpp"
 
 namespace rad {
-
-// A linear RGB image (radiance), width × height, rows top first; it views pixels it does not own
-// (RadianceImage and ReferenceImage convert as {image.width, image.height, image.pixels}).
-struct ImageView {
-    int width = 0;
-    int height = 0;
-    std::span<const glm::vec3> pixels;
-};
 
 enum class ErrorChannels {
     // Relative error of the luminance Y = 0.2126 R + 0.7152 G + 0.0722 B (Rec. 709 / sRGB primaries).
@@ -38,22 +29,22 @@ struct ImageErrorOptions {
 // saturated surfaces (the Cornell box's red wall has ρ_b = 0.05), where the reference is noisiest
 // relative to its value, do not weigh as much as the channels a viewer sees; ErrorChannels::rgb counts
 // colour errors too. Throws std::invalid_argument when the sizes differ or an image is empty.
-double block_relative_error(const ImageView& image, const ImageView& reference,
+double block_relative_error(const Image& image, const Image& reference,
                             const ImageErrorOptions& options = {});
 
 // What a noisy reference's own noise adds to block_relative_error on its own: the expected error of an
-// image that is exactly right, compared with a reference whose pixels have these standard errors (one per
-// pixel, independent from pixel to pixel). Per block it is E|N(0, σ)| = σ √(2/π) over the same
+// image that is exactly right, compared with a reference whose pixels have these standard errors (an image of
+// the same size, independent from pixel to pixel). Per block it is E|N(0, σ)| = σ √(2/π) over the same
 // denominator, σ the standard error of the block's mean; for luminance the channels' errors add as if fully
 // correlated (a path carries all three), which bounds σ from above. The true error of an image is then
 // about √(error² − noise²). Throws std::invalid_argument when the sizes differ or the image is empty.
-double block_relative_noise(const ImageView& reference, std::span<const glm::vec3> standard_error,
+double block_relative_noise(const Image& reference, const Image& standard_error,
                             const ImageErrorOptions& options = {});
 
 // The same with blocks of one pixel: the mean over pixels of |image − reference| / max(reference, floor).
 // It includes the reference's per-pixel noise, so it is an upper bound of the error against a noisy
 // reference rather than an estimate of it.
-double pixel_relative_error(const ImageView& image, const ImageView& reference,
+double pixel_relative_error(const Image& image, const Image& reference,
                             const ImageErrorOptions& options = {});
 
 }  // namespace rad

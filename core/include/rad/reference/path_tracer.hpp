@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "rad/io/image.hpp"
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/scene.hpp"
 #include "rad/util/progress.hpp"
@@ -65,16 +66,14 @@ struct PathTracerStats {
     std::uint64_t rays = 0;  // camera, bounce and shadow rays, counting each trip of a ray through Embree
 };
 
-// Radiance L = B / π per pixel, linear RGB in the scene's units, top row first: pixel (0, 0) is the top
-// left, as in the renderer's images (RadianceImage) and image files. The camera is the renderer's pinhole
-// (glm::lookAt and glm::perspective with the vertical fov and aspect = width / height); each sample is a
-// uniform point in its pixel (a box filter). Back faces are invisible to the camera, as in the renderer,
-// which culls them: camera rays pass through them. Where a ray meets nothing the radiance is 0.
+// Radiance L = B / π per pixel, linear RGB in the scene's units, top row first, as the renderer's images
+// and image files (rad::Image). The camera is the renderer's pinhole (glm::lookAt and glm::perspective with
+// the vertical fov and aspect = width / height); each sample is a uniform point in its pixel (a box filter).
+// Back faces are invisible to the camera, as in the renderer, which culls them: camera rays pass through
+// them. Where a ray meets nothing the radiance is 0.
 struct ReferenceImage {
-    int width = 0;
-    int height = 0;
-    std::vector<glm::vec3> pixels;
-    std::vector<glm::vec3> standard_error;  // of each pixel's radiance
+    Image image;
+    Image standard_error;  // of each pixel's radiance; an Image of image's size, so it can be written too
     PathTracerStats stats;
 };
 

@@ -27,10 +27,11 @@ std::vector<double> radiosity_noise(const SolvedLeaves& leaves, int rays) {
     const FormFactorMatrix& f = leaves.system.form_factors;
     for (std::size_t i = 0; i < noise.size(); ++i) {
         double h = 0.0, h2 = 0.0;
-        for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k) {
-            const double y = luminance(leaves.radiosity[f.column[k]]);
-            h += static_cast<double>(f.value[k]) * y;
-            h2 += static_cast<double>(f.value[k]) * y * y;
+        const FormFactorRow row = f.row(i);
+        for (std::size_t k = 0; k < row.size(); ++k) {
+            const double y = luminance(leaves.radiosity[row.columns[k]]);
+            h += static_cast<double>(row.values[k]) * y;
+            h2 += static_cast<double>(row.values[k]) * y * y;
         }
         if (!(h > 0.0)) continue;
         const double reflected =

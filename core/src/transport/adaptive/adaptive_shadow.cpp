@@ -52,10 +52,10 @@ double largest_factor(const LeafPoints& points, const glm::dvec3& normal, const 
 
 // The irradiance luminance H_i = Σ_j F_ij Y(B_j) of leaf i (its exposed part).
 double irradiance(const SolvedLeaves& leaves, std::size_t i) {
-    const FormFactorMatrix& f = leaves.system.form_factors;
+    const FormFactorRow row = leaves.system.form_factors.row(i);
     double h = 0.0;
-    for (std::uint64_t k = f.row_begin[i]; k < f.row_begin[i + 1]; ++k)
-        h += static_cast<double>(f.value[k]) * luminance(leaves.radiosity[f.column[k]]);
+    for (std::size_t k = 0; k < row.size(); ++k)
+        h += static_cast<double>(row.values[k]) * luminance(leaves.radiosity[row.columns[k]]);
     return h;
 }
 

@@ -23,12 +23,6 @@ std::uint64_t find_entry(const FormFactorMatrix& m, std::size_t i, std::uint32_t
     return it != last && *it == j ? static_cast<std::uint64_t>(it - m.column.begin()) : kAbsent;
 }
 
-double row_sum(const FormFactorMatrix& m, std::size_t i) {
-    double sum = 0.0;
-    for (std::uint64_t k = m.row_begin[i]; k < m.row_begin[i + 1]; ++k) sum += m.value[k];
-    return sum;
-}
-
 // Partial results of diagnose() over a range of rows, combined in a fixed tree by
 // parallel_deterministic_reduce so the figures do not depend on the thread count.
 struct Tally {
@@ -61,7 +55,7 @@ struct Tally {
 Tally tally_upper(const FormFactorMatrix& m, const PatchMesh& patches, const Range& rows,
                   std::vector<std::uint8_t>& mirrored, Tally t) {
     for (std::size_t i = rows.begin(); i != rows.end(); ++i) {
-        const double s = row_sum(m, i);
+        const double s = m.row(i).sum();
         t.min_row_sum = std::min(t.min_row_sum, s);
         t.max_row_sum = std::max(t.max_row_sum, s);
         const auto first =
@@ -182,11 +176,9 @@ FormFactorMatrix enforce_reciprocity(const FormFactorMatrix& matrix, const Patch
 void normalize_rows(FormFactorMatrix& matrix) {
     tbb::parallel_for(Range(0, matrix.rows(), 256), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            const double sum = row_sum(matrix, i);
+            const double sum = matrix.row(i).sum();
             if (!(sum > 0.0)) continue;
-            for (std::uint64_t k = matrix.row_begin[i]; k < matrix.row_begin[i + 1]; ++k) {
-                matrix.value[k] = static_cast<float>(matrix.value[k] / sum);
-            }
+            for (float& value : matrix.row_values(i)) value = static_cast<float>(value / sum);
         }
     });
 }

@@ -19,14 +19,10 @@ void expose_rows(FormFactorMatrix& matrix, std::span<const double> covered) {
         any = true;
         // The probes and the rows' own rays estimate the exposed share independently; a row must not come
         // to sum over 1, so the share is at least the row's sum.
-        double row_sum = 0.0;
-        for (std::uint64_t k = matrix.row_begin[i]; k < matrix.row_begin[i + 1]; ++k)
-            row_sum += matrix.value[k];
+        const double row_sum = matrix.row(i).sum();
         const double exposed = std::max({1.0 - covered[i], row_sum, kMinExposed});
         matrix.exposed[i] = static_cast<float>(exposed);
-        for (std::uint64_t k = matrix.row_begin[i]; k < matrix.row_begin[i + 1]; ++k) {
-            matrix.value[k] = static_cast<float>(matrix.value[k] / exposed);
-        }
+        for (float& value : matrix.row_values(i)) value = static_cast<float>(value / exposed);
     }
     if (!any) matrix.exposed.clear();
 }

@@ -39,6 +39,10 @@ struct FormFactorMatrix {
         const std::size_t first = row_begin[i], count = row_begin[i + 1] - row_begin[i];
         return {std::span(column).subspan(first, count), std::span(value).subspan(first, count)};
     }
+    // Row i's values, to rescale them in place.
+    std::span<float> row_values(std::size_t i) {
+        return std::span(value).subspan(row_begin[i], row_begin[i + 1] - row_begin[i]);
+    }
     double exposed_fraction(std::size_t row) const { return exposed.empty() ? 1.0 : exposed[row]; }
     std::size_t nonzeros() const { return column.size(); }
     std::size_t memory_bytes() const {

@@ -16,10 +16,7 @@ enum class FormFactorMethod { hemisphere, analytic };
 // Rays per patch of the hemisphere estimator when FormFactorOptions::rays is 0. A patch's row is a Monte
 // Carlo estimate of the light it gathers from other surfaces; the emitters' columns are computed
 // analytically (form_factors_emitter_columns.hpp), so these rays carry only the indirect light, which is
-// smooth. With 2048 rays the factor from one unit square to another at distance 1 has a standard deviation
-// of about 2.5 % (√2 times 4096 rays' 1.8 %), and what a radiosity solution sees, many patches together, is
-// far better (tests/test_form_factors_hemisphere.cpp); on the Cornell box, 2048 rays give the same image
-// error as 4096 in 60 % of the time (README, "Speed against error").
+// smooth and forgiving of noise (image error against rays: docs/measurements.md).
 inline constexpr int kDefaultHemisphereRays = 2048;
 // Shadow rays per pair of patches of the analytic estimator when FormFactorOptions::rays is 0: a 4 x 4
 // stratified pairing.

@@ -1,0 +1,176 @@
+// Every transport with every solver, on scenes with a known answer (pbrt's integrators_test in spirit): the
+// furnace (a closed cube of uniform ρ and E, B = E / (1 − ρ) on every element whatever the transport), the
+// energy balance of a closed and an open scene, Jacobi's steps as bounces, and the one refusal of a method
+// that needs a form-factor matrix. The transport is built as the program builds it, through
+// build_scene_transport, and read only through the Transport interface.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <tuple>
+
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/solve/solver.hpp"
+#include "rad/transport/scene_transport.hpp"
+#include "rad/util/error.hpp"
+
+namespace rad {
+namespace {
+
+Scene furnace_cube(double reflectance, double emitted_radiosity) {
+    Scene scene = make_cube();
+    for (Surface& s : scene.surfaces) {
+        s.material.reflectance = glm::dvec3(reflectance);
+        s.material.emission = glm::dvec3(emitted_radiosity / std::numbers::pi);
+    }
+    return scene;
+}
+
+// Small settings, so that every pair runs in about a second: a few hundred elements, refined (the leaves
+// are not the base patches) but not far.
+TransportSettings settings_for(Subdivision subdivision) {
+    TransportSettings settings;
+    settings.subdivision = subdivision;
+    settings.hierarchical.tolerance = 0.01;
+    settings.adaptive.tolerance = 0.15;
+    settings.adaptive.max_passes = 2;
+    return settings;
+}
+
+struct Built {
+    Scene scene;
+    PatchMesh base;
+    SceneTransport transport;
+};
+
+Built build(Scene scene, Subdivision subdivision, double patches_per_edge) {
+    Built out{std::move(scene), {}, {}};
+    const double size = bounding_box(out.scene).largest_extent() / patches_per_edge;
+    out.base = build_patches(out.scene, MeshingOptions{size});
+    out.transport = build_scene_transport(out.scene, out.base, settings_for(subdivision));
+    return out;
+}
+
+double total(const glm::dvec3& v) {
+    return v.x + v.y + v.z;
+}
+
+// Converged far beyond what the checks need; southwell's steps are single shots, a sweep's worth per bounce.
+SolverOptions tight(SolverMethod method, const Transport& transport) {
+    SolverOptions options;
+    options.tolerance = 1e-9;
+    options.max_steps = method == SolverMethod::southwell ? 2000 * transport.size() : 2000;
+    return options;
+}
+
+using Pair = std::tuple<Subdivision, SolverMethod>;
+
+class EveryTransport : public ::testing::TestWithParam<Pair> {
+  protected:
+    Subdivision subdivision() const { return std::get<0>(GetParam()); }
+    SolverMethod method() const { return std::get<1>(GetParam()); }
+    bool supported() const { return !needs_matrix(method()) || has_matrix(subdivision()); }
+};
+
+TEST_P(EveryTransport, FurnaceGivesEOverOneMinusRhoOnEveryElement) {
+    const double rho = 0.6, e = 1.0;
+    const Built built = build(furnace_cube(rho, e), subdivision(), 4.0);
+    const Transport& transport = *built.transport.transport;
+    ASSERT_EQ(transport.size(), built.transport.patches->size());
+    if (!supported()) {
+        try {
+            make_solver(method(), transport, tight(method(), transport));
+            FAIL() << "a method that needs a matrix ran on links";
+        } catch (const SettingError& e) {
+            EXPECT_EQ(e.setting(), "solver");
+        }
+        return;
+    }
+    auto solver = make_solver(method(), transport, tight(method(), transport));
+    ASSERT_TRUE(run_to_end(*solver).converged()) << solver->status_message();
+    const double expected = e / (1.0 - rho);
+    // Form-factor rows of a closed scene sum to 1 (every hemisphere ray meets a patch), which makes the
+    // furnace exact to rounding. A hierarchical leaf gathers its ancestors' interpolated links, scaled to
+    // its measured form factor to the scene; what is left is a per cent or so at a corner leaf.
+    const double per_element = has_matrix(subdivision()) ? 1e-6 : 2e-2;
+    double power = 0.0, area = 0.0;
+    for (std::size_t i = 0; i < transport.size(); ++i) {
+        ASSERT_NEAR(solver->solution()[i].x, expected, per_element * expected) << "element " << i;
+        power += transport.area[i] * solver->solution()[i].x;
+        area += transport.area[i];
+    }
+    EXPECT_NEAR(power / area, expected, 5e-3 * expected);
+    const EnergyBalance balance = energy_balance(transport, solver->solution());
+    EXPECT_NEAR(total(balance.absorbed) / total(balance.emitted), 1.0, 5e-3);
+    EXPECT_LT(total(balance.escaped), 1e-3 * total(balance.emitted));
+}
+
+// The Cornell box is open at the front: light escapes, and what is emitted is absorbed or escapes, to
+// within the transport's reciprocity error (A_i F_ij = A_j F_ji holds only approximately for estimated
+// form factors; the balance uses it): within 0.5 % for form factors on half the default mesh's patch
+// size. Hierarchical radiosity (base patches 4 times the default size, as the program makes them) loses 5 %
+// here, its known shortfall on open scenes (docs/subdivision.md): the bound holds it there until its
+// accounting is redone.
+TEST_P(EveryTransport, OpenSceneBalancesItsEnergy) {
+    if (!supported()) GTEST_SKIP() << "refused: see the furnace";
+    const Built built =
+        build(make_builtin_scene("cornell"), subdivision(), has_matrix(subdivision()) ? 8.0 : 4.0);
+    const Transport& transport = *built.transport.transport;
+    auto solver = make_solver(method(), transport, tight(method(), transport));
+    ASSERT_TRUE(run_to_end(*solver).converged()) << solver->status_message();
+    const EnergyBalance balance = energy_balance(transport, solver->solution());
+    const double emitted = total(balance.emitted);
+    EXPECT_GT(total(balance.escaped), 0.05 * emitted);
+    const double tolerance = has_matrix(subdivision()) ? 5e-3 : 0.06;
+    EXPECT_NEAR((total(balance.absorbed) + total(balance.escaped)) / emitted, 1.0, tolerance);
+}
+
+// Jacobi from B = E: step k holds the light of paths of up to k bounces, B_k = E + ρ gather(B_{k-1}).
+TEST_P(EveryTransport, JacobiStepsAreBounces) {
+    if (method() != SolverMethod::jacobi) GTEST_SKIP() << "jacobi only";
+    const Built built = build(make_builtin_scene("cornell"), subdivision(), 4.0);
+    const Transport& transport = *built.transport.transport;
+    auto solver = make_solver(SolverMethod::jacobi, transport, tight(SolverMethod::jacobi, transport));
+    std::vector<glm::dvec3> expected(transport.emission), gathered(transport.size());
+    for (int k = 1; k <= 3; ++k) {
+        solver->step();
+        transport.gather(expected, gathered);
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            expected[i] = transport.emission[i] + transport.reflectance[i] * gathered[i];
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            ASSERT_NEAR(total(solver->solution()[i]), total(expected[i]), 1e-12 * (1.0 + total(expected[i])));
+    }
+}
+
+std::string pair_name(const ::testing::TestParamInfo<Pair>& info) {
+    std::string name = std::string(subdivision_name(std::get<0>(info.param))) + "_" +
+                       std::string(solver_method_name(std::get<1>(info.param)));
+    for (char& c : name)
+        if (c == '-') c = '_';
+    return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Pairs, EveryTransport,
+                         ::testing::Combine(::testing::ValuesIn(all_subdivisions()),
+                                            ::testing::ValuesIn(all_solver_methods())),
+                         pair_name);
+
+// The report is the same kind of record for every transport, and its interactions are what gather reads.
+TEST(EveryTransportReport, NamesItsKindAndCountsItsInteractions) {
+    for (Subdivision s : all_subdivisions()) {
+        const Built built = build(make_builtin_scene("cornell"), s, 4.0);
+        const TransportReport report = built.transport.transport->report();
+        EXPECT_EQ(report.kind, subdivision_name(s));
+        EXPECT_EQ(report.elements, built.transport.transport->size());
+        EXPECT_GT(report.interactions, report.elements);
+        EXPECT_GT(report.memory_bytes, 0u);
+        EXPECT_GE(report.form_factor_passes, 1u);
+        EXPECT_EQ(report.interaction_name, has_matrix(s) ? "form factors" : "links");
+        EXPECT_EQ(built.transport.transport->matrix() != nullptr, has_matrix(s));
+    }
+}
+
+}  // namespace
+}  // namespace rad
