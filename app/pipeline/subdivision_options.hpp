@@ -24,7 +24,7 @@ HierarchicalOptions hierarchical_options(const SubdivisionOptions& options, int 
 
 // Adaptive subdivision's options from the command line's (and the form-factor seed). Its default tolerance,
 // 0.15, is where it matched or beat uniform meshes of as many patches in both absolute and relative error
-// on the Cornell box (tests/test_adaptive_subdivision.cpp, RAD_ADAPTIVE_MEASURE=1).
+// on the Cornell box (tests/transport/test_adaptive_subdivision.cpp, RAD_ADAPTIVE_MEASURE=1).
 AdaptiveOptions adaptive_options(const SubdivisionOptions& options, std::uint64_t seed);
 
 // Without --patch-size, the first (adaptive) or base (hierarchical) patches are this many times the uniform

@@ -1,5 +1,5 @@
 // The Monte Carlo reference: paths traced on the patches' geometry, no form factors. It must reproduce
-// closed forms (the furnace, the configuration factors of analytic.md), be deterministic for a seed on any
+// closed forms (the furnace, the configuration factors of docs/analytic.md), be deterministic for a seed on any
 // number of threads, see what the renderer's camera sees, and agree with the radiosity solution of the
 // Cornell box. Tolerances are 5 standard errors of the estimates (with fixed seeds), so a failure means a
 // bias, not bad luck.
@@ -103,7 +103,7 @@ TEST_P(PathTracerFurnace, GivesEOverOneMinusRho) {
 INSTANTIATE_TEST_SUITE_P(Rho, PathTracerFurnace, ::testing::Values(0.5, 0.9));
 
 // One square emits E = 1 and reflects nothing, the other reflects ρ = 0.5: the receiver's area-averaged
-// radiosity is ρ F E with F the closed-form configuration factor (analytic.md), and at a corner of the
+// radiosity is ρ F E with F the closed-form configuration factor (docs/analytic.md), and at a corner of the
 // receiver it is ρ F_point E with the point-to-polygon factor.
 struct ClosedForm {
     const char* scene;
@@ -253,7 +253,7 @@ TEST(PathTracerImage, FurnaceFromInsideIsUniform) {
 }
 
 // The camera is the renderer's: from the Cornell box's own camera the light is at the top, the red wall on
-// the left and the green wall on the right (cornell_box.md), and outside the box's opening there is black.
+// the left and the green wall on the right (docs/cornell-box.md), and outside the box's opening there is black.
 TEST(PathTracerImage, CornellCameraMatchesTheRenderersConvention) {
     const Meshed cornell = mesh(make_cornell_box(), 140.0);
     const PathTracer tracer(cornell.scene, cornell.patches, {.seed = 2});

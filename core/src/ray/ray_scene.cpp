@@ -37,7 +37,7 @@ const char* error_name(RTCError code) {
 }
 
 // Embree's (unnormalized) geometric normal Ng of a quad points to the side from which its corners run
-// counter-clockwise, our front, so a ray reaches a front when it runs against Ng. test_embree_scene pins
+// counter-clockwise, our front, so a ray reaches a front when it runs against Ng. tests/transport/test_form_factors_embree_scene.cpp pins
 // this down.
 bool reaches_front(const RTCRayHit& hit) {
     return hit.ray.dir_x * hit.hit.Ng_x + hit.ray.dir_y * hit.hit.Ng_y + hit.ray.dir_z * hit.hit.Ng_z < 0.0f;
@@ -121,7 +121,7 @@ RayScene::RayScene(const PatchMesh& patches, const char* device_config)
     e.throw_if_failed();
     rtcSetSceneBuildQuality(e.scene, RTC_BUILD_QUALITY_HIGH);
     // Watertight: without it one ray in millions slips between two patches along their shared edge and
-    // leaves a closed room (tests/test_hard_meeting_surfaces.cpp, Seams).
+    // leaves a closed room (tests/hard/test_hard_meeting_surfaces.cpp, Seams).
     rtcSetSceneFlags(e.scene, RTC_SCENE_FLAG_ROBUST);
 
     RTCGeometry quads = rtcNewGeometry(e.device, RTC_GEOMETRY_TYPE_QUAD);
