@@ -1,9 +1,12 @@
-// `radiosity render [SCENE] --out FILE`: solves the scene once and writes the image a camera sees, with no
+// `radiosity render [SCENE] --out FILE`: solves the scene once and writes the image each camera sees, with no
 // window (EGL, or OSMesa). .png gets exposure and the sRGB curve; .exr and .pfm hold linear radiance L = B /
-// π. --export writes the mesh drawn (smooth or --flat) with its colours.
-#include <chrono>
+// π. --export writes the mesh drawn (smooth or --flat) with its colours. SCENE may be a saved solution
+// (`solve --save`), which is drawn as saved: no form factors, no solve.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <glm/geometric.hpp>
 #include <iostream>
 #include <memory>
@@ -13,12 +16,15 @@
 #include "cli/export_option.hpp"
 #include "cli/gl_platform_option.hpp"
 #include "cli/number_checks.hpp"
+#include "cli/progress_bar.hpp"
 #include "gl/headless_context.hpp"
 #include "gl/scene_image_renderer.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
 #include "rad/camera/camera_view.hpp"
 #include "rad/io/image_file.hpp"
+#include "rad/io/saved_solution.hpp"
 #include "rad/util/error.hpp"
+#include "rad/util/stopwatch.hpp"
 
 namespace rad {
 
@@ -29,8 +35,9 @@ struct RenderOptions {
     std::string out;
     int width = 512;
     int height = 512;
-    std::string camera;  // "ex,ey,ez,tx,ty,tz[,ux,uy,uz]"; empty: the scene's camera
-    double fov = 0.0;    // 0: the camera's own
+    std::vector<std::string> cameras;  // "ex,ey,ez,tx,ty,tz[,ux,uy,uz]" each; none: the scene's camera
+    std::string cameras_file;          // one camera per line
+    double fov = 0.0;                  // 0: the camera's own
     double exposure = 0.0;
     std::vector<std::string> exports;
     bool flat = false;
@@ -40,12 +47,16 @@ struct RenderOptions {
 
 // Largest image side: 16384² float RGBA with 4 samples is already 4 GiB of framebuffer.
 constexpr int kMaxImageSide = 16384;
+// A cameras file is a short list typed by people; more than this is not one (and would be that many images).
+constexpr std::size_t kMaxCameras = 10000;
+constexpr std::uintmax_t kMaxCamerasFileBytes = 1 << 20;
 
 glm::dvec3 vec(const std::vector<double>& v, std::size_t at) {
     return {v[at], v[at + 1], v[at + 2]};
 }
 
-Camera parse_camera(const std::string& text, const Camera& fallback) {
+// `where` names the text in errors: "--camera", or "FILE:LINE".
+Camera parse_camera(const std::string& text, const Camera& fallback, const std::string& where) {
     std::vector<double> values;
     std::stringstream in(text);
     std::string item;
@@ -58,56 +69,149 @@ Camera parse_camera(const std::string& text, const Camera& fallback) {
             used = 0;
         }
         if (used == 0 || used != item.size() || !std::isfinite(value)) {
-            throw InputError("--camera: '" + item + "' is not a number (want ex,ey,ez,tx,ty,tz[,ux,uy,uz])");
+            throw InputError(where + ": '" + item + "' is not a number (want ex,ey,ez,tx,ty,tz[,ux,uy,uz])");
         }
         values.push_back(value);
     }
     if (values.size() != 6 && values.size() != 9) {
-        throw InputError("--camera: " + std::to_string(values.size()) +
+        throw InputError(where + ": " + std::to_string(values.size()) +
                          " numbers; want 6 (eye, target) or 9 (eye, target, up)");
     }
     Camera camera = fallback;
     camera.eye = vec(values, 0);
     camera.target = vec(values, 3);
     if (values.size() == 9) camera.up = vec(values, 6);
-    if (glm::length(camera.target - camera.eye) == 0.0) throw InputError("--camera: eye and target coincide");
+    if (glm::length(camera.target - camera.eye) == 0.0) throw InputError(where + ": eye and target coincide");
     if (glm::length(glm::cross(camera.target - camera.eye, camera.up)) == 0.0) {
-        throw InputError("--camera: the up vector is zero or points along the view direction");
+        throw InputError(where + ": the up vector is zero or points along the view direction");
     }
     return camera;
 }
 
-int run_render(RenderOptions options) {
+// One camera per line; blank lines and # comments are skipped. Errors name the file and line.
+std::vector<Camera> read_cameras_file(const std::string& path, const Camera& fallback) {
+    std::error_code error;
+    const auto status = std::filesystem::status(path, error);
+    if (error || !std::filesystem::exists(status)) throw InputError(path + ": no such file (--cameras)");
+    if (!std::filesystem::is_regular_file(status))
+        throw InputError(path + ": not a regular file (--cameras)");
+    if (std::filesystem::file_size(path, error) > kMaxCamerasFileBytes || error) {
+        throw InputError(path + ": larger than 1 MiB; a cameras file holds one camera per line");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot be read (--cameras)");
+    std::vector<Camera> cameras;
+    std::string line;
+    for (std::size_t number = 1; std::getline(in, line); ++number) {
+        if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos) continue;
+        const auto last = line.find_last_not_of(" \t\r");
+        const std::string where = path + ":" + std::to_string(number);
+        if (cameras.size() == kMaxCameras) {
+            throw InputError(where + ": more than " + std::to_string(kMaxCameras) + " cameras");
+        }
+        cameras.push_back(parse_camera(line.substr(first, last - first + 1), fallback, where));
+    }
+    if (in.bad()) throw InputError(path + ": cannot be read (--cameras)");
+    if (cameras.empty()) throw InputError(path + ": no cameras (one ex,ey,ez,tx,ty,tz[,ux,uy,uz] per line)");
+    return cameras;
+}
+
+// The cameras asked for, or the scene's own; --fov applies to each.
+std::vector<Camera> chosen_cameras(const RenderOptions& options, const Camera& scene) {
+    std::vector<Camera> cameras;
+    for (const std::string& text : options.cameras) cameras.push_back(parse_camera(text, scene, "--camera"));
+    if (!options.cameras_file.empty()) cameras = read_cameras_file(options.cameras_file, scene);
+    if (cameras.empty()) cameras.push_back(scene);
+    if (options.fov > 0.0)
+        for (Camera& camera : cameras) camera.fov_degrees = options.fov;
+    return cameras;
+}
+
+// out.png, or with several cameras out-1.png, out-2.png, ...: the number before the extension.
+std::string image_path(const std::string& out, std::size_t index, std::size_t count) {
+    if (count == 1) return out;
+    const std::filesystem::path path(out);
+    return (path.parent_path() /
+            (path.stem().string() + "-" + std::to_string(index + 1) + path.extension().string()))
+        .string();
+}
+
+int run_render(RenderOptions options, const CLI::App& command) {
     check_image_path(options.out);
     check_export_paths(options.exports);
+    if (!options.cameras.empty() && !options.cameras_file.empty()) {
+        throw InputError("--cameras: give --camera or --cameras, not both");
+    }
     options.pipeline.display.mode = options.flat ? ColourMode::flat : ColourMode::smooth;
-    RadiosityPipeline pipeline(options.pipeline);
-    Camera camera = scene_camera(pipeline.loaded().scene);
-    if (!options.camera.empty()) camera = parse_camera(options.camera, camera);
-    if (options.fov > 0.0) camera.fov_degrees = options.fov;
+    const std::string& scene = options.pipeline.scene.scene;
+    const bool saved = is_saved_solution_path(scene);
+    if (saved) refuse_solving_options(command, scene);
 
-    const StepReport& report = pipeline.solve();
+    const Stopwatch load_clock;
+    std::unique_ptr<RadiosityPipeline> pipeline =
+        saved
+            ? std::make_unique<RadiosityPipeline>(read_saved_solution(scene), scene, options.pipeline.display)
+            : std::make_unique<RadiosityPipeline>(options.pipeline);
+    const double load_seconds = load_clock.seconds();
+    const std::vector<Camera> cameras = chosen_cameras(options, scene_camera(pipeline->loaded().scene));
+
+    // A saved solution is drawn as saved; a scene is solved once for every camera.
+    StepReport report;
+    std::string status_message;
+    if (const SavedSolution* from = pipeline->saved()) {
+        report.step = from->report.steps;
+        report.residual = from->report.residual;
+        for (SolverStatus s : {SolverStatus::running, SolverStatus::converged, SolverStatus::iteration_limit,
+                               SolverStatus::diverged, SolverStatus::not_converging}) {
+            if (solver_status_name(s) == from->report.status) report.status = s;
+        }
+        status_message = from->report.status_message;
+    } else {
+        Progress progress;
+        {
+            const ProgressBar bar(progress);
+            report = pipeline->solve(&progress);
+        }
+        status_message = pipeline->solver().status_message();
+    }
     if (report.status == SolverStatus::diverged || report.status == SolverStatus::not_converging) {
         std::cerr << "radiosity: failed: the solver " << solver_status_name(report.status) << ": "
-                  << pipeline.solver().status_message() << '\n';
+                  << status_message << '\n';
         return 1;
     }
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch render_clock;
     const HeadlessContext context(options.gl_platform);
-    const Image image =
-        SceneImageRenderer(pipeline, options.outline).render(camera, options.width, options.height);
-    const double render_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_image(options.out, image, options.exposure);
+    const SceneImageRenderer renderer(*pipeline, options.outline);
+    // Each image is written as soon as it is drawn, so many cameras never hold many images.
+    for (std::size_t k = 0; k < cameras.size(); ++k) {
+        write_image(image_path(options.out, k, cameras.size()),
+                    renderer.render(cameras[k], options.width, options.height), options.exposure);
+    }
+    const double render_seconds = render_clock.seconds();
 
-    const StageSeconds& s = pipeline.seconds();
-    std::printf(
-        "%zu patches, %s: %zu steps, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f, "
-        "render %.3f (%s)\n",
-        pipeline.patches().size(), std::string(solver_method_name(pipeline.method())).c_str(), report.step,
-        report.residual, s.mesh, s.form_factors, s.solve, render_seconds, context.description().c_str());
-    std::printf("wrote %s (%dx%d)\n", options.out.c_str(), options.width, options.height);
-    write_exports(options.exports, pipeline, options.exposure, std::cout);
+    const std::string method =
+        saved ? pipeline->saved()->settings.solver : std::string(solver_method_name(pipeline->method()));
+    if (saved) {
+        std::printf(
+            "%zu patches, saved solution of %s (%s: %zu steps, residual %.3g); seconds: load %.3f, "
+            "render %.3f (%s)\n",
+            pipeline->patches().size(), pipeline->loaded().scene.source.c_str(), method.c_str(), report.step,
+            report.residual, load_seconds, render_seconds, context.description().c_str());
+    } else {
+        const StageSeconds& s = pipeline->seconds();
+        std::printf(
+            "%zu patches, %s: %zu steps, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f, "
+            "render %.3f (%s)\n",
+            pipeline->patches().size(), method.c_str(), report.step, report.residual, s.mesh, s.form_factors,
+            s.solve, render_seconds, context.description().c_str());
+    }
+    for (std::size_t k = 0; k < cameras.size(); ++k) {
+        std::printf("wrote %s (%dx%d)\n", image_path(options.out, k, cameras.size()).c_str(), options.width,
+                    options.height);
+    }
+    write_exports(options.exports, *pipeline, options.exposure, std::cout);
     return 0;
 }
 
@@ -115,8 +219,10 @@ int run_render(RenderOptions options) {
 
 CommandRunner add_render_command(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
-    CLI::App* render =
-        app.add_subcommand("render", "Solve SCENE and write the image a camera sees (no window)");
+    CLI::App* render = app.add_subcommand(
+        "render",
+        "Solve SCENE (or take a saved .radiosity solution) and write the image each camera "
+        "sees (no window)");
     add_pipeline_options(*render, options->pipeline);
     render
         ->add_option("--out", options->out,
@@ -128,10 +234,14 @@ CommandRunner add_render_command(CLI::App& app) {
     render->add_option("--height", options->height, "Image height in pixels")
         ->check(CLI::Range(1, kMaxImageSide))
         ->capture_default_str();
-    render->add_option(
-        "--camera", options->camera,
-        "ex,ey,ez,tx,ty,tz[,ux,uy,uz]: eye, target and up (default: the scene's camera, or one "
-        "that frames the scene)");
+    render
+        ->add_option("--camera", options->cameras,
+                     "ex,ey,ez,tx,ty,tz[,ux,uy,uz]: eye, target and up (default: the scene's camera, or one "
+                     "that frames the scene); repeatable: one image per camera, OUT numbered -1, -2, ...")
+        ->allow_extra_args(false);
+    render->add_option("--cameras", options->cameras_file,
+                       "A file of cameras, one ex,ey,ez,tx,ty,tz[,ux,uy,uz] per line (# comments): one image "
+                       "per camera, from one solve");
     render->add_option("--fov", options->fov, "Vertical field of view in degrees (default: the camera's own)")
         ->check(finite_range(1.0, 179.0));
     add_exposure_option(*render, options->exposure,
@@ -142,7 +252,7 @@ CommandRunner add_render_command(CLI::App& app) {
     add_gl_platform_option(*render, options->gl_platform);
     return [render, options]() -> int {
         if (!*render) return -1;
-        return run_render(*options);
+        return run_render(*options, *render);
     };
 }
 

@@ -1,6 +1,7 @@
-// `radiosity solve [SCENE] --json FILE`: meshes the scene, computes the form factors, runs the chosen solver
-// to convergence (or its step limit), writes the per-patch results and statistics as JSON and prints a short
-// summary, and with --export the display mesh with its colours. Exit status 1 (after writing the JSON, and
+// `radiosity solve [SCENE] --json FILE --save FILE.radiosity`: meshes the scene, computes the form factors,
+// runs the chosen solver to convergence (or its step limit), writes the per-patch results and statistics as
+// JSON and/or the solved state for render and view (at least one of them), prints a short summary, and with
+// --export the display mesh with its colours. Exit status 1 (after writing the JSON and the saved state, and
 // exporting nothing) when the system cannot converge.
 #include <sys/resource.h>
 
@@ -13,6 +14,7 @@
 #include "cli/progress_bar.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
 #include "rad/io/output_path.hpp"
+#include "rad/io/saved_solution.hpp"
 #include "rad/io/solution_json.hpp"
 #include "rad/util/error.hpp"
 
@@ -23,6 +25,7 @@ namespace {
 struct SolveCommandOptions {
     PipelineOptions pipeline;
     std::string json_path;
+    std::string save_path;
     std::vector<std::string> exports;
     double exposure = 0.0;
 };
@@ -92,8 +95,26 @@ SolveStatistics statistics(const RadiosityPipeline& pipeline) {
 }
 
 int run_solve(const SolveCommandOptions& options) {
-    require_output_folder("json_path", options.json_path);
+    if (options.json_path.empty() && options.save_path.empty()) {
+        throw InputError("solve needs --json FILE or --save FILE.radiosity (or both)");
+    }
+    if (!options.json_path.empty()) require_output_folder("json_path", options.json_path);
+    if (!options.save_path.empty()) {
+        if (!is_saved_solution_path(options.save_path)) {
+            throw InputError("--save " + options.save_path + ": the name must end in .radiosity");
+        }
+        try {
+            require_output_folder("save_path", options.save_path);
+        } catch (const SettingError& e) {
+            // The program's table of flags (input_error_message.cpp) does not know this one.
+            throw InputError(e.worded([](std::string_view) { return std::string("--save"); }));
+        }
+    }
     check_export_paths(options.exports);
+    if (is_saved_solution_path(options.pipeline.scene.scene)) {
+        throw InputError(options.pipeline.scene.scene +
+                         ": a saved solution is solved already; solve its scene, or render or view it");
+    }
     RadiosityPipeline pipeline(options.pipeline);
     {
         Progress progress;
@@ -102,11 +123,15 @@ int run_solve(const SolveCommandOptions& options) {
     }
     const SolveStatistics stats = statistics(pipeline);
     const LoadedScene& loaded = pipeline.loaded();
-    write_solution_json(options.json_path, loaded.scene, pipeline.patches(), pipeline.transport(),
-                        pipeline.solver().solution(), stats);
+    if (!options.json_path.empty()) {
+        write_solution_json(options.json_path, loaded.scene, pipeline.patches(), pipeline.transport(),
+                            pipeline.solver().solution(), stats);
+    }
+    if (!options.save_path.empty()) write_saved_solution(options.save_path, pipeline.saved_solution());
 
     print_summary(std::cout, pipeline, stats);
-    std::cout << "wrote " << options.json_path << '\n';
+    if (!options.json_path.empty()) std::cout << "wrote " << options.json_path << '\n';
+    if (!options.save_path.empty()) std::cout << "wrote " << options.save_path << '\n';
     const SolverStatus status = pipeline.solver().report().status;
     if (status == SolverStatus::iteration_limit) {
         std::cerr << "radiosity: warning: " << stats.status_message << '\n';
@@ -123,11 +148,18 @@ int run_solve(const SolveCommandOptions& options) {
 
 CommandRunner add_solve_command(CLI::App& app) {
     auto options = std::make_shared<SolveCommandOptions>();
-    CLI::App* solve =
-        app.add_subcommand("solve", "Solve SCENE's radiosity and write per-patch results as JSON");
+    CLI::App* solve = app.add_subcommand(
+        "solve", "Solve SCENE's radiosity and write per-patch results as JSON, or the solved state");
     add_pipeline_options(*solve, options->pipeline);
-    solve->add_option("--json", options->json_path, "Where to write the per-patch results and statistics")
-        ->required();
+    // At least one output, refused while parsing (as a missing --json was before --save existed).
+    CLI::Option_group* outputs =
+        solve->add_option_group("outputs", "What solve writes: --json, --save or both");
+    outputs->add_option("--json", options->json_path, "Where to write the per-patch results and statistics");
+    outputs->add_option(
+        "--save", options->save_path,
+        "Where to write the solved state (FILE.radiosity), which render and view show without "
+        "solving again");
+    outputs->require_option(1, 0);
     add_export_option(*solve, options->exports);
     add_exposure_option(*solve, options->exposure,
                         "--export only: the colours show radiance x 2^EXPOSURE (as render does)");

@@ -1,9 +1,11 @@
 // `radiosity [view] [SCENE]`: the interactive viewer, which is also what runs when no command is named.
+// SCENE may be a saved solution (`solve --save`): shown at once, stepping continues from it.
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "cli/export_option.hpp"
 #include "cli/number_checks.hpp"
+#include "rad/io/saved_solution.hpp"
 #include "viewer/viewer.hpp"
 #include "viewer/viewer_options.hpp"
 
@@ -33,7 +35,10 @@ void add_viewer_options(CLI::App& command, ViewerOptions& options) {
     command.add_flag("--exit", options.exit, "Script: close the window after --steps (and --screenshot)");
 }
 
-int run_view(ViewerOptions options) {
+int run_view(ViewerOptions options, const CLI::App& command) {
+    if (is_saved_solution_path(options.pipeline.scene.scene)) {
+        refuse_solving_options(command, options.pipeline.scene.scene);
+    }
     if (options.exit && options.steps < 0) options.steps = 0;  // --exit alone: show the emission, then close
     if (!options.screenshot.empty() && options.steps < 0) options.steps = 0;
     Viewer viewer(options);
@@ -50,7 +55,7 @@ CommandRunner add_view_command(CLI::App& app) {
     add_viewer_options(*view, *view_options);
     add_viewer_options(app, *bare_options);
     return [view, view_options, bare_options]() -> int {
-        return run_view(*view ? *view_options : *bare_options);
+        return *view ? run_view(*view_options, *view) : run_view(*bare_options, *view->get_parent());
     };
 }
 

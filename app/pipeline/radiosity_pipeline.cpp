@@ -15,6 +15,22 @@ void add_pipeline_options(CLI::App& command, PipelineOptions& options) {
     add_subdivision_options(command, options.subdivision);
 }
 
+void refuse_solving_options(const CLI::App& command, const std::string& saved) {
+    // The options' names, from registering them on a scratch command.
+    CLI::App scratch;
+    PipelineOptions unused;
+    add_pipeline_options(scratch, unused);
+    for (const CLI::Option* option : scratch.get_options()) {
+        const std::string name = option->get_name();
+        if (!option->nonpositional()) continue;  // the scene, which is the saved file
+        const CLI::Option* given = command.get_option_no_throw(name);
+        if (given && given->count() > 0) {
+            throw InputError(name + ": only for solving a scene; " + saved +
+                             " is solved already (solve the scene again to change it)");
+        }
+    }
+}
+
 RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(options) {
     subdivision_ = parse_subdivision(options.subdivision.method);
     method_ = solver_method(options.solver);
@@ -27,6 +43,78 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
     solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
 }
 
+RadiosityPipeline::RadiosityPipeline(SavedSolution saved, const std::string& path,
+                                     const DisplayOptions& display)
+    : saved_path_(path) {
+    const SavedSettings& s = saved.settings;
+    options_.scene.scene = s.scene_source;
+    options_.scene.patch_size = s.patch_size;
+    options_.form_factors.method =
+        s.form_factor_method == "analytic" ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
+    options_.form_factors.rays = static_cast<int>(s.rays);
+    options_.form_factors.seed = s.seed;
+    options_.form_factors.enforce_reciprocity = s.reciprocity;
+    options_.form_factors.normalize_rows = s.normalize_rows;
+    options_.subdivision.method = s.subdivision;
+    options_.subdivision.tolerance = s.refine_tolerance;
+    options_.subdivision.min_patch_size = s.min_patch_size;
+    options_.solver.method = s.solver;
+    options_.solver.tolerance = s.tolerance;
+    options_.solver.bounces = s.bounces;
+    options_.solver.initial = s.initial;
+    options_.solver.relaxation = s.relaxation;
+    options_.display = display;
+    try {
+        subdivision_ = parse_subdivision(s.subdivision);
+        method_ = solver_method(options_.solver);
+        solver_options_ = rad::solver_options(options_.solver, saved.size());
+        check_solver_options(solver_options_);
+    } catch (const InputError& e) {
+        throw InputError(path + ": the saved settings are unusable: " + e.what());
+    }
+    loaded_.scene = std::move(saved.scene);
+    loaded_.patch_size = s.patch_size;
+    // The base patches are made again only when the transport is rebuilt.
+    saved.scene = Scene{};
+    saved_ = std::move(saved);
+}
+
+SavedSolution RadiosityPipeline::saved_solution() const {
+    SavedSolution saved;
+    SavedSettings& s = saved.settings;
+    s.scene_source = loaded_.scene.source;
+    s.patch_size = loaded_.patch_size;
+    s.subdivision = subdivision_name(subdivision_);
+    s.refine_tolerance = options_.subdivision.tolerance;
+    s.min_patch_size = options_.subdivision.min_patch_size;
+    s.form_factor_method =
+        options_.form_factors.method == FormFactorMethod::analytic ? "analytic" : "hemisphere";
+    s.rays = options_.form_factors.rays;
+    s.seed = options_.form_factors.seed;
+    s.reciprocity = options_.form_factors.enforce_reciprocity;
+    s.normalize_rows = options_.form_factors.normalize_rows;
+    s.solver = solver_method_name(method_);
+    s.tolerance = solver_options_.tolerance;
+    s.bounces = options_.solver.bounces;
+    s.initial = options_.solver.initial;
+    s.relaxation = options_.solver.relaxation;
+    saved.scene = loaded_.scene;
+    saved.scene.warnings.clear();
+    saved.patches = patches();
+    const Transport& t = transport();
+    saved.area = t.area;
+    saved.reflectance = t.reflectance;
+    saved.emission = t.emission;
+    saved.solution.assign(solver_->solution().begin(), solver_->solution().end());
+    saved.display_solution = solver_->display_solution();
+    const StepReport& report = solver_->report();
+    saved.report.steps = report.step;
+    saved.report.residual = report.residual;
+    saved.report.status = solver_status_name(report.status);
+    saved.report.status_message = solver_->status_message();
+    return saved;
+}
+
 TransportSettings RadiosityPipeline::transport_settings() const {
     TransportSettings settings;
     settings.subdivision = subdivision_;
@@ -34,6 +122,8 @@ TransportSettings RadiosityPipeline::transport_settings() const {
     settings.adaptive = adaptive_options(options_.subdivision, options_.form_factors.seed);
     settings.hierarchical =
         hierarchical_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
+    settings.clustered =
+        clustered_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
     // An automatic choice solves the passes by bounces; the final solver is chosen once the transport is
     // known.
     settings.pass_method = method_;
@@ -44,6 +134,11 @@ TransportSettings RadiosityPipeline::transport_settings() const {
 void RadiosityPipeline::prepare(Progress* progress) {
     if (solver_) return;
     const Stopwatch clock;
+    if (saved_ && loaded_.patches.size() == 0) {
+        MeshingOptions meshing;
+        meshing.patch_size = loaded_.patch_size;
+        loaded_.patches = build_patches(loaded_.scene, meshing);
+    }
     built_ = build_scene_transport(loaded_.scene, loaded_.patches, transport_settings(), progress);
     seconds_.form_factors = clock.seconds();
     work_.form_factor_passes += built_.transport->report().form_factor_passes;
@@ -52,7 +147,25 @@ void RadiosityPipeline::prepare(Progress* progress) {
     if (automatic_method(options_.solver)) method_ = recommended_method(*built_.transport, solver_options_);
     // Adaptive subdivision's last pass was solved already, but a fresh solver from B = E is what stepping
     // bounces shows.
+    if (saved_) continue_saved();
     solver_ = make_solver(method_, *built_.transport, solver_options_);
+}
+
+void RadiosityPipeline::continue_saved() {
+    // The rebuilt transport must be the one the solution was solved on: same elements, same corners.
+    const PatchMesh& rebuilt = patches();
+    if (rebuilt.size() != saved_->size() || rebuilt.points != saved_->patches.points) {
+        throw InputError(saved_path_ + ": the transport rebuilt from the saved scene and settings has " +
+                         std::to_string(rebuilt.size()) + " elements, not the saved " +
+                         std::to_string(saved_->size()) + " (saved by another version of the program?)");
+    }
+    solver_options_.initial = InitialGuess::given;
+    solver_options_.given = saved_->solution;
+    // Southwell's unshot radiosity is not saved, so it cannot continue; jacobi can, from any radiosity.
+    if (method_ == SolverMethod::southwell) {
+        method_ = SolverMethod::jacobi;
+        solver_options_.max_steps = options_.solver.bounces;
+    }
 }
 
 StepReport RadiosityPipeline::step() {
@@ -66,7 +179,8 @@ StepReport RadiosityPipeline::step() {
 
 const StepReport& RadiosityPipeline::solve(Progress* progress) {
     prepare(progress);
-    if (progress) progress->begin("solving", solver_options_.max_steps);
+    // The step limit bounds the steps; how many the solver needs is not known.
+    if (progress) progress->begin("solving", solver_options_.max_steps, ProgressTotal::at_most);
     const Stopwatch clock;
     const std::size_t steps_before = solver_->report().step;
     run_to_end(*solver_, progress);
@@ -92,6 +206,7 @@ EnergyBalance RadiosityPipeline::energy_balance() const {
 }
 
 std::vector<glm::vec3> RadiosityPipeline::vertex_radiance() const {
+    if (!solver_ && saved_) return rad::vertex_radiance(display(), saved_->display_solution);
     if (!solver_) return std::vector<glm::vec3>(display().vertex_count(), glm::vec3(0.0f));
     return rad::vertex_radiance(display(), solver_->display_solution());
 }

@@ -9,6 +9,7 @@
 #include "pipeline/solver_options.hpp"
 #include "pipeline/subdivision_options.hpp"
 #include "rad/display/display_mesh.hpp"
+#include "rad/io/saved_solution.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/scene_transport.hpp"
 #include "rad/util/progress.hpp"
@@ -25,6 +26,11 @@ struct PipelineOptions {
 };
 
 void add_pipeline_options(CLI::App& command, PipelineOptions& options);
+
+// A saved solution (`saved`, for the message) is solved already: the options add_pipeline_options registers
+// (the scene excepted) are refused with an InputError naming the first one given on `command`, rather than
+// ignored, so nobody believes they took effect.
+void refuse_solving_options(const CLI::App& command, const std::string& saved);
 
 // How much work was done, so callers and tests can check that nothing runs twice.
 struct WorkCounts {
@@ -46,6 +52,12 @@ class RadiosityPipeline {
     // Loads and meshes the scene (for hierarchical radiosity, into base patches). Throws InputError for bad
     // input or options.
     explicit RadiosityPipeline(const PipelineOptions& options);
+    // From a saved solution (read from `path`, named in errors): patches(), display() and vertex_radiance()
+    // show the saved state at once, with no transport. prepare() rebuilds the transport from the saved scene
+    // and settings (it is not saved) and the solver continues from the saved radiosity (southwell's by
+    // jacobi, as southwell cannot start from a given radiosity). Throws InputError naming the file when the
+    // settings cannot be used.
+    RadiosityPipeline(SavedSolution saved, const std::string& path, const DisplayOptions& display = {});
 
     // Builds the transport (form factors, adaptive passes or hierarchical links) and makes the solver; does
     // nothing the second time. Adaptive and hierarchical subdivision change patches() and display().
@@ -62,7 +74,10 @@ class RadiosityPipeline {
     const LoadedScene& loaded() const { return loaded_; }
     // The patches the solution belongs to: the meshed scene's, or after prepare the adaptive or
     // hierarchical leaves.
-    const PatchMesh& patches() const { return built_.patches ? *built_.patches : loaded_.patches; }
+    const PatchMesh& patches() const {
+        if (built_.patches) return *built_.patches;
+        return saved_ ? saved_->patches : loaded_.patches;
+    }
     Subdivision subdivision() const { return subdivision_; }
     // Built on first use, so `solve` never pays for it.
     const DisplayMesh& display() const;
@@ -78,13 +93,21 @@ class RadiosityPipeline {
     // Linear radiance L = B / π per display vertex for the solution as it stands (black before prepare).
     std::vector<glm::vec3> vertex_radiance() const;
 
+    // The saved solution the pipeline was made from, until prepare() replaces it by a transport; else null.
+    const SavedSolution* saved() const { return saved_ && !solver_ ? &*saved_ : nullptr; }
+    // The state to save (after prepare): the scene, the settings, the elements and the solution.
+    SavedSolution saved_solution() const;
+
     const WorkCounts& work() const { return work_; }
     const StageSeconds& seconds() const { return seconds_; }
 
   private:
     TransportSettings transport_settings() const;
+    void continue_saved();
 
     PipelineOptions options_;
+    std::optional<SavedSolution> saved_;
+    std::string saved_path_;
     Subdivision subdivision_ = Subdivision::uniform;
     LoadedScene loaded_;
     SceneTransport built_;

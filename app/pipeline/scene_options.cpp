@@ -12,7 +12,7 @@ void add_scene_options(CLI::App& command, SceneOptions& options) {
     command
         .add_option("scene", options.scene,
                     "Scene: a .obj (with its .mtl) or .ply file, or builtin:NAME (cornell, cube, parallel, "
-                    "perpendicular)")
+                    "perpendicular); render and view also take a saved solution, FILE.radiosity")
         ->capture_default_str();
     command
         .add_option("--patch-size", options.patch_size,

@@ -11,6 +11,7 @@ double base_patch_scale(Subdivision subdivision) {
         case Subdivision::adaptive:
             return kAdaptiveBaseScale;
         case Subdivision::hierarchical:
+        case Subdivision::clustered:
             return kHierarchicalBaseScale;
         case Subdivision::uniform:
             break;
@@ -21,17 +22,19 @@ double base_patch_scale(Subdivision subdivision) {
 Subdivision parse_subdivision(const std::string& name) {
     for (Subdivision s : all_subdivisions())
         if (name == subdivision_name(s)) return s;
-    throw InputError("--subdivision: unknown method '" + name + "' (uniform, adaptive, hierarchical)");
+    throw InputError("--subdivision: unknown method '" + name +
+                     "' (uniform, adaptive, hierarchical, clustered)");
 }
 
 void add_subdivision_options(CLI::App& command, SubdivisionOptions& options) {
     command
         .add_option("--subdivision", options.method,
                     "How patches are made: uniform (one size), adaptive (split where the light changes, then "
-                    "solved again; --patch-size is the first size, by default twice the uniform one) or "
+                    "solved again; --patch-size is the first size, by default twice the uniform one), "
                     "hierarchical (a quadtree of elements linked where needed; --patch-size is the base "
-                    "patch size, by default 4 times the uniform one)")
-        ->check(CLI::IsMember({"uniform", "adaptive", "hierarchical"}))
+                    "patch size, by default 4 times the uniform one) or clustered (hierarchical with volume "
+                    "clusters over the base patches, for scenes of many faces; base patches as hierarchical)")
+        ->check(CLI::IsMember({"uniform", "adaptive", "hierarchical", "clustered"}))
         ->capture_default_str();
     command
         .add_option("--refine-tol", options.tolerance,
@@ -53,6 +56,15 @@ AdaptiveOptions adaptive_options(const SubdivisionOptions& options, std::uint64_
     a.min_patch_size = options.min_patch_size;
     a.seed = seed;
     return a;
+}
+
+ClusteredOptions clustered_options(const SubdivisionOptions& options, int rays, std::uint64_t seed) {
+    ClusteredOptions c;
+    if (options.tolerance > 0.0) c.tolerance = options.tolerance;
+    c.min_patch_size = options.min_patch_size;
+    if (rays > 0) c.visibility_rays = rays;
+    c.seed = seed;
+    return c;
 }
 
 HierarchicalOptions hierarchical_options(const SubdivisionOptions& options, int rays, std::uint64_t seed) {

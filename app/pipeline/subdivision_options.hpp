@@ -19,6 +19,9 @@ void add_subdivision_options(CLI::App& command, SubdivisionOptions& options);
 // Throws InputError naming --subdivision for an unknown name.
 Subdivision parse_subdivision(const std::string& name);
 
+// Clustering's options from the command line's (and the form-factor seed and --rays).
+ClusteredOptions clustered_options(const SubdivisionOptions& options, int rays, std::uint64_t seed);
+
 // The hierarchical solver's options from the command line's (and the form-factor seed and --rays).
 HierarchicalOptions hierarchical_options(const SubdivisionOptions& options, int rays, std::uint64_t seed);
 

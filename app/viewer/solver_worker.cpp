@@ -9,6 +9,7 @@
 
 #include "rad/camera/camera_view.hpp"
 #include "rad/display/display_outline.hpp"
+#include "rad/io/saved_solution.hpp"
 #include "rad/util/error.hpp"
 
 namespace rad {
@@ -190,7 +191,11 @@ void SolverWorker::loop() {
 
 void SolverWorker::rebuild(const PipelineOptions& options) {
     progress_->begin("loading and meshing", 0);
-    auto pipeline = std::make_unique<RadiosityPipeline>(options);
+    // A saved solution is shown at once; its transport is rebuilt behind it, so stepping can continue.
+    const bool saved = is_saved_solution_path(options.scene.scene);
+    auto pipeline = saved ? std::make_unique<RadiosityPipeline>(read_saved_solution(options.scene.scene),
+                                                                options.scene.scene, options.display)
+                          : std::make_unique<RadiosityPipeline>(options);
     if (options.scene.scene != options_.scene.scene || !pipeline_) ++scene_version_;
     const DisplayOptions display = options_.display;
     const bool had_pipeline = pipeline_ != nullptr;
@@ -200,7 +205,7 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     display_ = build_display_mesh(pipeline_->patches(), options_.display);
     start_bounce_history();
     set_can_step(false);
-    publish(true, false);
+    publish(true, saved);
     {
         std::lock_guard lock(mutex_);
         snapshot_.error.clear();
@@ -213,7 +218,17 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
         display_ = build_display_mesh(pipeline_->patches(), options_.display);
         publish(true, false);
     }
-    reset_solver(Reset{options_.solver.method, options_.solver.tolerance, false});
+    if (!saved) {
+        reset_solver(Reset{options_.solver.method, options_.solver.tolerance, false});
+        return;
+    }
+    // The pipeline's solver continues from the saved radiosity; a reset would start it from the emission.
+    start_bounce_history();
+    add_bounce(pipeline_->solver().display_solution());
+    history_residual_.clear();
+    history_unshot_.clear();
+    set_can_step(!pipeline_->solver().report().finished());
+    publish(false, true);
 }
 
 void SolverWorker::reset_solver(const Reset& reset) {
@@ -301,10 +316,16 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
     std::shared_ptr<ViewerRadiance> radiance;
     if (with_radiance) {
         radiance = std::make_shared<ViewerRadiance>();
-        radiance->cumulative = vertex_radiance(display_, pipeline_->solver().display_solution());
-        radiance->bounces.assign(vertex_bounces_.begin(), vertex_bounces_.end());
-        radiance->first_bounce = first_bounce_;
-        radiance->step = pipeline_->solver().report().step;
+        if (const SavedSolution* saved = pipeline_->saved()) {
+            // Before the transport is rebuilt: the saved state, with no bounce history.
+            radiance->cumulative = vertex_radiance(display_, saved->display_solution);
+            radiance->step = saved->report.steps;
+        } else {
+            radiance->cumulative = vertex_radiance(display_, pipeline_->solver().display_solution());
+            radiance->bounces.assign(vertex_bounces_.begin(), vertex_bounces_.end());
+            radiance->first_bounce = first_bounce_;
+            radiance->step = pipeline_->solver().report().step;
+        }
     }
     std::lock_guard lock(mutex_);
     if (geometry) snapshot_.geometry = std::move(geometry);

@@ -12,7 +12,7 @@ namespace rad {
 namespace {
 
 constexpr const char* kFormFactorNames[] = {"hemisphere", "analytic"};
-constexpr const char* kSubdivisionNames[] = {"uniform", "adaptive", "hierarchical"};
+constexpr const char* kSubdivisionNames[] = {"uniform", "adaptive", "hierarchical", "clustered"};
 
 std::vector<std::string> solver_names() {
     std::vector<std::string> names;
@@ -184,7 +184,7 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
         options_.form_factors.method =
             form_factor_index_ == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
     }
-    if (ImGui::Combo("subdivision", &subdivision_index_, kSubdivisionNames, 3)) {
+    if (ImGui::Combo("subdivision", &subdivision_index_, kSubdivisionNames, 4)) {
         options_.subdivision.method = kSubdivisionNames[subdivision_index_];
         options_.scene.patch_size = 0.0;  // each method has its own default (hierarchical: base patches)
     }

@@ -187,3 +187,46 @@ TEST(SolveCommand, BadOptionsExitTwoNamingTheOptionAndWriteNothing) {
 
 }  // namespace
 }  // namespace rad
+
+namespace rad {
+namespace {
+
+// --save alone is enough (no --json), the file holds the solution the JSON reports, and a bad --save is
+// refused before any work, writing nothing.
+TEST(SolveCommand, SavesTheSolvedStateWithOrWithoutJson) {
+    test::TempDir dir;
+    const std::string saved = (dir.path() / "cube.radiosity").string();
+    const auto alone = run_radiosity({"solve", "builtin:cube", "--patch-size", "0.5", "--save", saved});
+    ASSERT_EQ(alone.status, 0) << alone.err;
+    EXPECT_NE(alone.out.find("wrote " + saved), std::string::npos) << alone.out;
+    const std::string bytes = test::read_file_text(saved);
+    ASSERT_GT(bytes.size(), 32u);
+    EXPECT_EQ(bytes.substr(0, 8), std::string("\x89RADSOL\n", 8));
+
+    const std::string json_path = (dir.path() / "cube.json").string();
+    const std::string saved_too = (dir.path() / "both.radiosity").string();
+    const auto both = run_radiosity(
+        {"solve", "builtin:cube", "--patch-size", "0.5", "--json", json_path, "--save", saved_too});
+    ASSERT_EQ(both.status, 0) << both.err;
+    EXPECT_TRUE(std::filesystem::exists(json_path));
+    // The same solve twice: the same bytes (the format holds no times or machine details).
+    EXPECT_EQ(test::read_file_text(saved_too), bytes);
+
+    test::TempDir empty;
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{"solve", "builtin:cube", "--save", (empty.path() / "x.bin").string()}, "--save"},
+        {{"solve", "builtin:cube", "--save", (empty.path() / "no" / "x.radiosity").string()}, "--save"},
+        {{"solve", saved, "--save", (empty.path() / "x.radiosity").string()}, saved},
+        {{"solve", "builtin:cube"}, "--save"},
+    };
+    for (const auto& [args, words] : cases) {
+        const auto result = run_radiosity(args);
+        EXPECT_EQ(result.status, 2) << args.back();
+        EXPECT_NE(result.err.find(words), std::string::npos) << result.err;
+        EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(empty.path()));
+}
+
+}  // namespace
+}  // namespace rad

@@ -1,6 +1,6 @@
 // The Monte Carlo reference: paths traced on the patches' geometry, no form factors. It must reproduce
-// closed forms (the furnace, the configuration factors of docs/analytic.md), be deterministic for a seed on any
-// number of threads, see what the renderer's camera sees, and agree with the radiosity solution of the
+// closed forms (the furnace, the configuration factors of docs/analytic.md), be deterministic for a seed on
+// any number of threads, see what the renderer's camera sees, and agree with the radiosity solution of the
 // Cornell box. Tolerances are 5 standard errors of the estimates (with fixed seeds), so a failure means a
 // bias, not bad luck.
 #include <gtest/gtest.h>
@@ -253,7 +253,8 @@ TEST(PathTracerImage, FurnaceFromInsideIsUniform) {
 }
 
 // The camera is the renderer's: from the Cornell box's own camera the light is at the top, the red wall on
-// the left and the green wall on the right (docs/cornell-box.md), and outside the box's opening there is black.
+// the left and the green wall on the right (docs/cornell-box.md), and outside the box's opening there is
+// black.
 TEST(PathTracerImage, CornellCameraMatchesTheRenderersConvention) {
     const Meshed cornell = mesh(make_cornell_box(), 140.0);
     const PathTracer tracer(cornell.scene, cornell.patches, {.seed = 2});

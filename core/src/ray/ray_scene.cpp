@@ -1,9 +1,12 @@
 #include "rad/ray/ray_scene.hpp"
 
 #include <embree3/rtcore.h>
+// The builder header needs rtcore.h first.
+#include <embree3/rtcore_builder.h>
 
 #include <glm/common.hpp>
 #include <limits>
+#include <new>
 #include <vector>
 
 #include <algorithm>
@@ -12,6 +15,8 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+
+#include "rad/ray/box_tree.hpp"
 
 namespace rad {
 
@@ -37,8 +42,8 @@ const char* error_name(RTCError code) {
 }
 
 // Embree's (unnormalized) geometric normal Ng of a quad points to the side from which its corners run
-// counter-clockwise, our front, so a ray reaches a front when it runs against Ng. tests/transport/test_form_factors_embree_scene.cpp pins
-// this down.
+// counter-clockwise, our front, so a ray reaches a front when it runs against Ng.
+// tests/transport/test_form_factors_embree_scene.cpp pins this down.
 bool reaches_front(const RTCRayHit& hit) {
     return hit.ray.dir_x * hit.hit.Ng_x + hit.ray.dir_y * hit.hit.Ng_y + hit.ray.dir_z * hit.hit.Ng_z < 0.0f;
 }
@@ -182,6 +187,123 @@ void RayScene::intersect(std::span<const Ray> rays, std::span<RayHit> hits) cons
         }
     }
     embree_->throw_if_failed();
+}
+
+// The builder's nodes, in memory Embree's thread-local allocator owns until the BVH is released.
+namespace {
+
+struct BuildNode {
+    bool leaf = false;
+    unsigned count = 0;
+    BuildNode* children[2] = {nullptr, nullptr};
+    RTCBounds bounds[2] = {};
+    std::uint32_t* items = nullptr;  // leaf: the primitive ids
+};
+
+void* create_node(RTCThreadLocalAllocator allocator, unsigned int child_count, void*) {
+    void* memory = rtcThreadLocalAlloc(allocator, sizeof(BuildNode), 16);
+    auto* node = new (memory) BuildNode;
+    node->count = child_count;
+    return node;
+}
+
+void set_children(void* node, void** children, unsigned int count, void*) {
+    for (unsigned i = 0; i < count; ++i)
+        static_cast<BuildNode*>(node)->children[i] = static_cast<BuildNode*>(children[i]);
+}
+
+void set_bounds(void* node, const RTCBounds** bounds, unsigned int count, void*) {
+    for (unsigned i = 0; i < count; ++i) static_cast<BuildNode*>(node)->bounds[i] = *bounds[i];
+}
+
+void* create_leaf(RTCThreadLocalAllocator allocator, const RTCBuildPrimitive* primitives, size_t count,
+                  void*) {
+    void* memory = rtcThreadLocalAlloc(allocator, sizeof(BuildNode), 16);
+    auto* node = new (memory) BuildNode;
+    node->leaf = true;
+    node->count = static_cast<unsigned>(count);
+    node->items =
+        static_cast<std::uint32_t*>(rtcThreadLocalAlloc(allocator, count * sizeof(std::uint32_t), 4));
+    for (size_t i = 0; i < count; ++i) node->items[i] = primitives[i].primID;
+    // Embree hands a leaf's primitives in an order that may depend on the threads.
+    std::sort(node->items, node->items + count);
+    return node;
+}
+
+Box box_of(const RTCBounds& b) {
+    return {glm::dvec3(b.lower_x, b.lower_y, b.lower_z), glm::dvec3(b.upper_x, b.upper_y, b.upper_z)};
+}
+
+// Depth first from the root into `tree`; `index` was reserved for the node by its parent.
+void flatten(const BuildNode& node, std::uint32_t index, BoxTree& tree) {
+    tree.nodes[index].item_begin = static_cast<std::uint32_t>(tree.items.size());
+    if (node.leaf) {
+        tree.nodes[index].leaf = true;
+        tree.nodes[index].first = static_cast<std::uint32_t>(tree.items.size());
+        tree.nodes[index].count = node.count;
+        tree.items.insert(tree.items.end(), node.items, node.items + node.count);
+    } else {
+        const auto first = static_cast<std::uint32_t>(tree.nodes.size());
+        tree.nodes[index].leaf = false;
+        tree.nodes[index].first = first;
+        tree.nodes[index].count = node.count;
+        tree.nodes.resize(tree.nodes.size() + node.count);
+        for (unsigned c = 0; c < node.count; ++c) tree.nodes[first + c].bounds = box_of(node.bounds[c]);
+        for (unsigned c = 0; c < node.count; ++c) flatten(*node.children[c], first + c, tree);
+    }
+    tree.nodes[index].item_end = static_cast<std::uint32_t>(tree.items.size());
+}
+
+}  // namespace
+
+BoxTree build_box_tree(std::span<const Box> boxes, unsigned max_leaf_size) {
+    BoxTree tree;
+    tree.nodes.resize(1);
+    if (boxes.empty()) return tree;
+    Box all{boxes[0].lower, boxes[0].upper};
+    std::vector<RTCBuildPrimitive> primitives(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        all.lower = glm::min(all.lower, boxes[i].lower);
+        all.upper = glm::max(all.upper, boxes[i].upper);
+        RTCBuildPrimitive& p = primitives[i];
+        p.lower_x = static_cast<float>(boxes[i].lower.x);
+        p.lower_y = static_cast<float>(boxes[i].lower.y);
+        p.lower_z = static_cast<float>(boxes[i].lower.z);
+        p.upper_x = static_cast<float>(boxes[i].upper.x);
+        p.upper_y = static_cast<float>(boxes[i].upper.y);
+        p.upper_z = static_cast<float>(boxes[i].upper.z);
+        p.geomID = 0;
+        p.primID = static_cast<unsigned>(i);
+    }
+    tree.nodes[0].bounds = all;
+    RTCDevice device = rtcNewDevice("");
+    if (!device) throw std::runtime_error("Embree: cannot create a device for the box tree");
+    RTCBVH bvh = rtcNewBVH(device);
+    RTCBuildArguments arguments = rtcDefaultBuildArguments();
+    arguments.buildQuality = RTC_BUILD_QUALITY_MEDIUM;
+    arguments.maxBranchingFactor = 2;
+    arguments.minLeafSize = 1;
+    arguments.maxLeafSize = std::max(1u, max_leaf_size);
+    arguments.bvh = bvh;
+    arguments.primitives = primitives.data();
+    arguments.primitiveCount = primitives.size();
+    arguments.primitiveArrayCapacity = primitives.size();
+    arguments.createNode = create_node;
+    arguments.setNodeChildren = set_children;
+    arguments.setNodeBounds = set_bounds;
+    arguments.createLeaf = create_leaf;
+    const auto* root = static_cast<const BuildNode*>(rtcBuildBVH(&arguments));
+    if (!root) {
+        rtcReleaseBVH(bvh);
+        rtcReleaseDevice(device);
+        throw std::runtime_error("Embree: the box tree could not be built");
+    }
+    tree.nodes.reserve(2 * boxes.size() / std::max(1u, max_leaf_size) + 2);
+    tree.items.reserve(boxes.size());
+    flatten(*root, 0, tree);
+    rtcReleaseBVH(bvh);
+    rtcReleaseDevice(device);
+    return tree;
 }
 
 }  // namespace rad

@@ -53,7 +53,15 @@ SolverMethod parse_solver_method(std::string_view name) {
 }
 
 std::string_view initial_guess_name(InitialGuess initial) {
-    return initial == InitialGuess::emission ? "emission" : "direct";
+    switch (initial) {
+        case InitialGuess::emission:
+            return "emission";
+        case InitialGuess::direct_illumination:
+            return "direct";
+        case InitialGuess::given:
+            return "given";
+    }
+    return "emission";
 }
 
 InitialGuess parse_initial_guess(std::string_view name) {

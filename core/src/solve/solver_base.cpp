@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <glm/common.hpp>
 #include <limits>
+#include <stdexcept>
+
+#include "rad/util/error.hpp"
 
 namespace rad {
 
@@ -55,9 +58,23 @@ std::optional<std::string> light_cannot_decay(const Transport& transport) {
     return std::nullopt;
 }
 
-std::vector<glm::dvec3> initial_guess(const Transport& transport, InitialGuess initial) {
+std::vector<glm::dvec3> initial_guess(SolverMethod method, const Transport& transport,
+                                      const SolverOptions& options) {
+    if (options.initial == InitialGuess::given) {
+        // Southwell would take B − E for unshot radiosity, which is right only for the direct illumination.
+        if (method == SolverMethod::southwell) {
+            throw SettingError("initial_guess", "southwell cannot start from a given radiosity");
+        }
+        if (options.given.size() != transport.size()) {
+            throw std::invalid_argument("given radiosity has " + std::to_string(options.given.size()) +
+                                        " values for " + std::to_string(transport.size()) + " elements");
+        }
+        return options.given;
+    }
     std::vector<glm::dvec3> guess = transport.emission;
-    if (initial == InitialGuess::direct_illumination) jacobi_step(transport, transport.emission, guess);
+    if (options.initial == InitialGuess::direct_illumination) {
+        jacobi_step(transport, transport.emission, guess);
+    }
     return guess;
 }
 
@@ -68,7 +85,7 @@ SolverBase::SolverBase(SolverMethod method, const Transport& transport, const So
     const glm::dvec3 emitted = power_per_channel(transport.area, transport.emission);
     const double total = emitted.x + emitted.y + emitted.z;
     emitted_power_ = total > 0.0 ? total : 1.0;
-    solution_ = initial_guess(transport, options.initial);
+    solution_ = initial_guess(method, transport, options);
     // A first guess that overflows is not handed on; start() then reports the divergence.
     if (!all_finite(solution_)) {
         solution_ = transport.emission;

@@ -56,6 +56,16 @@ SceneTransport hierarchical(const Scene& scene, const PatchMesh& base, const Tra
     return out;
 }
 
+SceneTransport clustered(const Scene& scene, const PatchMesh& base, const TransportSettings& settings,
+                         Progress* progress) {
+    std::unique_ptr<ClusteredTransport> transport =
+        make_clustered_transport(scene, base, settings.clustered, progress);
+    SceneTransport out;
+    out.patches = &transport->hierarchy().leaf_patches;
+    out.transport = std::move(transport);
+    return out;
+}
+
 }  // namespace
 
 std::string_view subdivision_name(Subdivision subdivision) {
@@ -66,18 +76,20 @@ std::string_view subdivision_name(Subdivision subdivision) {
             return "adaptive";
         case Subdivision::hierarchical:
             return "hierarchical";
+        case Subdivision::clustered:
+            return "clustered";
     }
     return "uniform";
 }
 
 const std::vector<Subdivision>& all_subdivisions() {
     static const std::vector<Subdivision> all = {Subdivision::uniform, Subdivision::adaptive,
-                                                 Subdivision::hierarchical};
+                                                 Subdivision::hierarchical, Subdivision::clustered};
     return all;
 }
 
 bool has_matrix(Subdivision subdivision) {
-    return subdivision != Subdivision::hierarchical;
+    return subdivision == Subdivision::uniform || subdivision == Subdivision::adaptive;
 }
 
 SceneTransport build_scene_transport(const Scene& scene, const PatchMesh& base,
@@ -87,6 +99,8 @@ SceneTransport build_scene_transport(const Scene& scene, const PatchMesh& base,
             return adaptive(scene, base, settings, progress);
         case Subdivision::hierarchical:
             return hierarchical(scene, base, settings, progress);
+        case Subdivision::clustered:
+            return clustered(scene, base, settings, progress);
         case Subdivision::uniform:
             break;
     }

@@ -29,8 +29,10 @@ const std::vector<SolverMethod>& all_solver_methods();
 // Throws SettingError (solver) listing the names.
 SolverMethod parse_solver_method(std::string_view name);
 
-// The first guess: B = E, or the direct illumination B = E + ρ F E (the light of paths of up to one bounce).
-enum class InitialGuess { emission, direct_illumination };
+// The first guess: B = E, or the direct illumination B = E + ρ F E (the light of paths of up to one bounce),
+// or given: SolverOptions::given, a radiosity per element from elsewhere (a saved solution, to continue it).
+// Southwell cannot start from a given radiosity (its unshot radiosity is not known): make_solver refuses it.
+enum class InitialGuess { emission, direct_illumination, given };
 std::string_view initial_guess_name(InitialGuess initial);  // "emission", "direct"
 InitialGuess parse_initial_guess(std::string_view name);    // throws SettingError (initial_guess)
 
@@ -45,7 +47,8 @@ struct SolverOptions {
     double tolerance = 1e-5;       // converged when the relative residual is at most this
     std::size_t max_steps = 1000;  // status iteration_limit after this many steps; 0: no limit
     InitialGuess initial = InitialGuess::emission;
-    double relaxation = 1.0;  // Gauss-Seidel over-relaxation ω, in (0, 2); 1 is plain Gauss-Seidel
+    std::vector<glm::dvec3> given;  // InitialGuess::given: one radiosity per element
+    double relaxation = 1.0;        // Gauss-Seidel over-relaxation ω, in (0, 2); 1 is plain Gauss-Seidel
     // Direct solves above these sizes are refused (SettingError, solver): a dense LU costs n³ time
     // and n² memory, a sparse one can fill in just as badly.
     std::size_t direct_max_dense_patches = 6000;

@@ -7,6 +7,7 @@
 #include "rad/scene/scene.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/adaptive/adaptive_subdivision.hpp"
+#include "rad/transport/clustered/clustered_transport.hpp"
 #include "rad/transport/hierarchical/hierarchical_radiosity.hpp"
 #include "rad/transport/transport.hpp"
 #include "rad/transport/uniform/form_factors.hpp"
@@ -20,8 +21,10 @@ namespace rad {
 //                 neighbours or a shadow edge crosses, form factors and solve repeated; ends in uniform form
 //                 factors over the last leaves;
 //   hierarchical  coarse base patches split into a quadtree as links between elements need it (Hanrahan,
-//                 Salzman and Aupperle 1991).
-enum class Subdivision { uniform, adaptive, hierarchical };
+//                 Salzman and Aupperle 1991);
+//   clustered     hierarchical radiosity with volume clusters over the base patches above their quadtrees,
+//                 refined from the root cluster's link to itself (Smits, Arvo and Greenberg 1994).
+enum class Subdivision { uniform, adaptive, hierarchical, clustered };
 
 std::string_view subdivision_name(Subdivision subdivision);  // "uniform", "adaptive", "hierarchical"
 const std::vector<Subdivision>& all_subdivisions();
@@ -34,6 +37,7 @@ struct TransportSettings {
     FormFactorOptions form_factors;                   // uniform and adaptive
     AdaptiveOptions adaptive;                         // adaptive
     HierarchicalOptions hierarchical;                 // hierarchical
+    ClusteredOptions clustered;                       // clustered
     SolverMethod pass_method = SolverMethod::jacobi;  // adaptive: how each pass is solved
     SolverOptions pass_solver;
 };

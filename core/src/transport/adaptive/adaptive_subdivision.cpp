@@ -49,7 +49,10 @@ PassSolution solve_pass(const Scene& scene, const PatchMesh& mesh, const FormFac
     PassSolution out{make_uniform_transport(scene, mesh, std::move(form_factors), report), {}};
     pass.form_factor_seconds = form_factor_clock.seconds();
     const Stopwatch solve_clock;
-    if (progress) progress->begin(pass_stage(pass, number, "solving"), solver_options.max_steps);
+    // The step limit bounds the solve, which usually converges far sooner: no share or estimate from it.
+    if (progress)
+        progress->begin(pass_stage(pass, number, "solving"), solver_options.max_steps,
+                        ProgressTotal::at_most);
     {
         const std::unique_ptr<Solver> solver = make_solver(method, out.system, solver_options);
         const StepReport& solved = run_to_end(*solver, progress);
@@ -118,6 +121,13 @@ AdaptiveResult subdivide_adaptively(const Scene& scene, const PatchMesh& base, c
         std::vector<std::uint32_t> leaves = tree.leaves();
         PatchMesh mesh = tree.leaf_mesh(leaves);
         AdaptivePass& pass = report.passes.emplace_back();
+        if (progress) {
+            progress->begin("adaptive pass " + std::to_string(number) + " of at most " +
+                                std::to_string(options.max_passes),
+                            0);
+            progress->note(std::to_string(mesh.size()) + " patches (at most " +
+                           std::to_string(options.max_patches) + "): form factors, then a solve");
+        }
         PassSolution solved = solve_pass(scene, mesh, ff, method, solver, number, pass, progress);
         std::optional<AdaptiveStop> stop;
         SplitChoice choice;

@@ -11,6 +11,7 @@
 #include "ray/coverage.hpp"
 #include "transport/hierarchical/hierarchical_refine.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
+#include "transport/uniform/form_factors_memory.hpp"
 #include "util/luminance.hpp"
 
 namespace rad {
@@ -109,6 +110,15 @@ void finish_leaves(HierarchicalSystem& system) {
     system.leaf_patches = system.tree.leaf_mesh(system.leaves);
 }
 
+// "2516 base patches, up to 4 rounds of 16 rays per link, at most 60000000 links (1.34 GB)": the work and
+// its bound in memory, told before the links are built.
+std::string linking_note(const PatchMesh& base, const HierarchicalOptions& o) {
+    return std::to_string(base.size()) + " base patches, up to " + std::to_string(std::max(1, o.rounds)) +
+           " rounds of " + std::to_string(o.visibility_rays) + " rays per link, at most " +
+           std::to_string(o.max_links) + " links (" +
+           format_bytes(static_cast<double>(o.max_links) * sizeof(HierarchicalLink)) + ")";
+}
+
 }  // namespace
 
 std::size_t HierarchicalSystem::memory_bytes() const {
@@ -148,7 +158,12 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
     for (int round = 0; round < std::max(1, o.rounds); ++round) {
         const Stopwatch refine_clock;
         refiner.set_epsilon(link_epsilon(*system, refiner.radiosity(), o.tolerance, round > 0));
-        if (progress) progress->begin("linking elements, round " + std::to_string(round + 1), 0);
+        // The links are refined as they are estimated, so their count, and the share done, is not known
+        // in advance: the stage has no total.
+        if (progress) {
+            progress->begin("linking elements, round " + std::to_string(round + 1), 0);
+            if (round == 0) progress->note(linking_note(base, o));
+        }
         const bool changed =
             round == 0 ? (refiner.refine(first_candidates(base)), true) : refiner.refine_again();
         report.refine_seconds += refine_clock.seconds();

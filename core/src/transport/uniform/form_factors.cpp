@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <limits>
+#include <string>
 
 #include "rad/ray/ray_scene.hpp"
 #include "rad/util/error.hpp"
@@ -61,6 +62,18 @@ RowFunction hemisphere_rows_with_emitters(const PatchMesh& patches, const RaySce
                                                             options.seed ^ kEmitterSeedSalt, {}, emitters));
 }
 
+// "2516 patches × 2048 rays, about 11 MB": what the pass will do and the memory it will take, told before
+// the pass so that a long one is expected.
+std::string pass_note(const PatchMesh& patches, const FormFactorOptions& options, int rays) {
+    const std::size_t n = patches.size();
+    const std::string memory =
+        format_bytes(static_cast<double>(form_factor_memory_estimate(n, options.method, rays)));
+    if (options.method == FormFactorMethod::hemisphere) {
+        return std::to_string(n) + " patches × " + std::to_string(rays) + " rays, about " + memory;
+    }
+    return std::to_string(n) + " patches, " + std::to_string(rays) + " shadow rays per pair, about " + memory;
+}
+
 }  // namespace
 
 FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactorOptions& options,
@@ -70,7 +83,10 @@ FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactor
     check_patch_count(patches);
     check_memory_budget(patches, options, rays);
 
-    if (progress) progress->begin("form factors", patches.size());
+    if (progress) {
+        progress->begin("form factors", patches.size());
+        if (patches.size() > 0) progress->note(pass_note(patches, options, rays));
+    }
     RowStats stats;
     FormFactorMatrix matrix;
     std::vector<double> covered(patches.size(), 0.0);

@@ -1,0 +1,123 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "rad/mesh/element_tree.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/scene.hpp"
+#include "rad/transport/transport.hpp"
+#include "rad/util/progress.hpp"
+
+namespace rad {
+
+// Hierarchical radiosity with clusters (Smits, Arvo and Greenberg 1994; Sillion 1995): a tree of volume
+// clusters over the base patches (Embree's BVH of their boxes) above the element quadtrees of the patches.
+// Refinement starts from the root cluster's link to itself; a link is split on its larger side (a cluster
+// into its children, an element into quarters) while the error it may leave in its receiver exceeds the
+// tolerance. Clusters send and receive by the orientations of their contents, summarized as the area their
+// surfaces present along each of the six axis directions (exact for axis-aligned surfaces, a smooth
+// approximation otherwise); an isotropic cluster (projected area A / 4 in every direction) is the
+// alternative, and for flat clusters such as a tessellated wall it is four times off.
+struct ClusteredOptions {
+    // A link is refined while reflectance × the source's radiosity × the link's form-factor bound exceeds
+    // tolerance × the scene's mean radiosity.
+    double tolerance = 0.05;
+    // Elements are not split when their longest edge is at most this; 0 picks the scene's extent / 256.
+    double min_patch_size = 0.0;
+    int visibility_rays = 4;           // shadow rays per link
+    unsigned max_cluster_patches = 4;  // base patches in a leaf cluster
+    std::size_t max_links = 50'000'000;
+    std::uint64_t seed = 1;
+};
+
+struct ClusteredReport {
+    std::size_t base_patches = 0;
+    std::size_t clusters = 0;
+    std::size_t elements = 0;  // nodes of the element trees, base patches included
+    std::size_t leaves = 0;
+    std::size_t links = 0;
+    std::size_t cluster_links = 0;  // links with a cluster at one end or both
+    std::uint64_t rays = 0;
+    double seconds = 0.0;
+    std::size_t memory_bytes = 0;
+    bool limited = false;  // max_links stopped refinement
+    double min_patch_size = 0.0;
+};
+
+// A node of the hierarchy: a cluster, or an element of the element trees.
+struct ClusterNode {
+    static constexpr std::uint32_t kClusterBit = 0x80000000u;
+    static std::uint32_t cluster(std::uint32_t c) { return c | kClusterBit; }
+    static bool is_cluster(std::uint32_t node) { return (node & kClusterBit) != 0; }
+    static std::uint32_t index(std::uint32_t node) { return node & ~kClusterBit; }
+};
+
+struct ClusterLink {
+    std::uint32_t receiver = 0;  // ClusterNode encoding
+    std::uint32_t source = 0;
+    // Irradiance at an element receiver per unit radiosity of the source, visibility included; for a cluster
+    // receiver, the same at a surface facing the source, which each surface inside takes by its cosine
+    // towards `direction` (unit, from the receiver to the source).
+    float factor = 0.0f;
+    glm::vec3 direction{0.0f};
+};
+
+// Clusters, elements and links; the leaves of the element trees are what the solution is indexed by.
+struct ClusterHierarchy {
+    struct Cluster {
+        glm::dvec3 centre{0.0};
+        double radius = 0.0;
+        double area = 0.0;
+        std::uint32_t first_child = 0;  // inner: children [first_child, first_child + child_count)
+        std::uint32_t child_count = 0;  // 0: a leaf cluster, holding base patches [patch_begin, patch_end)
+        std::uint32_t patch_begin = 0;  // into patch_order, for every cluster
+        std::uint32_t patch_end = 0;
+        // Σ A max(0, ±n·axis) over its surfaces, for +x, −x, +y, −y, +z, −z.
+        std::array<double, 6> facing{};
+    };
+    std::vector<Cluster> clusters;           // 0 is the root; children after their parents
+    std::vector<std::uint32_t> patch_order;  // base patches, cluster by cluster
+    ElementTree tree;
+    std::vector<glm::dvec3> reflectance;  // per element
+    std::vector<glm::dvec3> emission;     // per element, E = π Le
+    std::vector<ClusterLink> links;       // sorted by receiver
+    std::vector<std::uint32_t> receiver_runs;
+    std::vector<float> leaf_scale;  // per element (leaves only): gathered factors scaled to reach
+    std::vector<float> reach;       // per element (leaves only): measured share of rays that meet a front
+    std::vector<std::uint32_t> leaves;
+    PatchMesh leaf_patches;
+
+    explicit ClusterHierarchy(const PatchMesh& base) : tree(base) {}
+    std::size_t memory_bytes() const;
+};
+
+class ClusteredTransport final : public Transport {
+  public:
+    ClusteredTransport(std::unique_ptr<ClusterHierarchy> hierarchy, const ClusteredReport& report);
+
+    void gather(std::span<const glm::dvec3> radiosity, std::span<glm::dvec3> irradiance) const override;
+    std::vector<double> reach() const override;
+    TransportReport report() const override;
+
+    const ClusterHierarchy& hierarchy() const { return *hierarchy_; }
+    const ClusteredReport& clustered_report() const { return report_; }
+
+  private:
+    std::unique_ptr<ClusterHierarchy> hierarchy_;
+    ClusteredReport report_;
+};
+
+// Builds the clusters over `base` (build_patches of `scene`), refines the links from the root's link to
+// itself and normalizes each leaf's gathered factors to its measured reach. Throws SettingError for bad
+// options and Cancelled when `progress` is cancelled.
+std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene, const PatchMesh& base,
+                                                             const ClusteredOptions& options,
+                                                             Progress* progress = nullptr);
+
+}  // namespace rad

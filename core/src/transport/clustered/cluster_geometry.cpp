@@ -1,0 +1,102 @@
+#include "transport/clustered/cluster_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+namespace rad {
+
+ConvexPolygon element_polygon(const ElementTree& tree, std::uint32_t element) {
+    const Element& e = tree[element];
+    ConvexPolygon polygon;
+    polygon.count = e.is_triangle() ? 3 : 4;
+    for (std::size_t k = 0; k < polygon.count; ++k) polygon.corners[k] = tree.points()[e.corners[k]];
+    return polygon;
+}
+
+NodeShape node_shape(const ClusterHierarchy& h, std::uint32_t node) {
+    NodeShape shape;
+    const std::uint32_t index = ClusterNode::index(node);
+    if (ClusterNode::is_cluster(node)) {
+        const ClusterHierarchy::Cluster& c = h.clusters[index];
+        shape.centre = c.centre;
+        shape.radius = c.radius;
+        shape.area = c.area;
+        shape.cluster = true;
+        shape.facing = c.facing;
+        return shape;
+    }
+    const Element& e = h.tree[index];
+    shape.centre = e.shape.centroid;
+    shape.area = e.shape.area;
+    shape.normal = e.shape.normal;
+    const ConvexPolygon polygon = element_polygon(h.tree, index);
+    for (std::size_t k = 0; k < polygon.count; ++k)
+        shape.radius = std::max(shape.radius, glm::length(polygon.corners[k] - shape.centre));
+    return shape;
+}
+
+double projected_area(const std::array<double, 6>& facing, const glm::dvec3& d) {
+    return std::abs(d.x) * facing[d.x >= 0.0 ? 0 : 1] + std::abs(d.y) * facing[d.y >= 0.0 ? 2 : 3] +
+           std::abs(d.z) * facing[d.z >= 0.0 ? 4 : 5];
+}
+
+double summary_cosine(const glm::dvec3& n, const glm::dvec3& d) {
+    double c = 0.0;
+    for (int a = 0; a < 3; ++a) c += std::abs(d[a]) * std::max(0.0, d[a] >= 0.0 ? n[a] : -n[a]);
+    return c;
+}
+
+double transfer_factor(const NodeShape& receiver, const NodeShape& source) {
+    if (!receiver.cluster) return link_factor(receiver, source, false);
+    NodeShape facing = receiver;
+    facing.cluster = false;  // a surface facing the source: cosine 1
+    facing.normal = source.centre - receiver.centre;
+    const double length = std::sqrt(facing.normal.x * facing.normal.x + facing.normal.y * facing.normal.y +
+                                    facing.normal.z * facing.normal.z);
+    if (!(length > 0.0)) return 0.0;
+    facing.normal /= length;
+    return link_factor(facing, source, false);
+}
+
+double link_factor(const NodeShape& receiver, const NodeShape& source, bool bound) {
+    const glm::dvec3 d = source.centre - receiver.centre;
+    const double distance2 = glm::dot(d, d);
+    const double distance = std::sqrt(distance2);
+    const glm::dvec3 direction = distance > 0.0 ? d / distance : glm::dvec3(0.0);
+    auto cosine = [&](const NodeShape& at, const glm::dvec3& towards, double other_radius) {
+        // A cluster's contents may all face the other node: as a bound its share is 1.
+        if (at.cluster) return bound ? 1.0 : std::min(1.0, projected_area(at.facing, towards) / at.area);
+        const double c = glm::dot(at.normal, towards);
+        const double lift = !bound ? 0.0 : distance > 0.0 ? std::min(1.0, other_radius / distance) : 1.0;
+        return std::clamp(c + lift, 0.0, 1.0);
+    };
+    const double c_r = cosine(receiver, direction, source.radius);
+    const double c_s = cosine(source, -direction, receiver.radius);
+    // As a bound, the kernel at the two balls' nearest approach: the centres' distance understates the
+    // light between near parts of large nodes.
+    const bool clusters = receiver.cluster || source.cluster;
+    const double gap =
+        bound && clusters ? std::max(0.0, distance - receiver.radius - source.radius) : distance;
+    return source.area * c_r * c_s / (std::numbers::pi * gap * gap + source.area);
+}
+
+void sample_node(const ClusterHierarchy& h, std::span<const double> patch_area_prefix, std::uint32_t node,
+                 RandomStream& random, glm::dvec3& point, glm::dvec3& normal) {
+    std::uint32_t element = ClusterNode::index(node);
+    if (ClusterNode::is_cluster(node)) {
+        const ClusterHierarchy::Cluster& c = h.clusters[element];
+        const double low = patch_area_prefix[c.patch_begin], high = patch_area_prefix[c.patch_end];
+        const double pick = low + random.uniform() * (high - low);
+        const auto it = std::upper_bound(patch_area_prefix.begin() + c.patch_begin + 1,
+                                         patch_area_prefix.begin() + c.patch_end, pick);
+        const auto slot = static_cast<std::size_t>(it - patch_area_prefix.begin()) - 1;
+        element = h.patch_order[std::min<std::size_t>(slot, c.patch_end - 1)];
+    }
+    const ConvexPolygon polygon = element_polygon(h.tree, element);
+    point = point_on_convex_polygon(polygon.span(), glm::dvec2(random.uniform(), random.uniform()));
+    normal = h.tree[element].shape.normal;
+}
+
+}  // namespace rad

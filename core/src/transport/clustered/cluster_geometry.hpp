@@ -1,0 +1,52 @@
+#pragma once
+
+// What refinement and visibility need to know of a node of the cluster hierarchy, cluster or element alike.
+// Private to the library.
+
+#include <glm/vec3.hpp>
+
+#include "rad/geometry/point_polygon_factor.hpp"
+#include "rad/transport/clustered/clustered_transport.hpp"
+#include "sampling/sampling.hpp"
+
+namespace rad {
+
+struct NodeShape {
+    glm::dvec3 centre{0.0};
+    double radius = 0.0;  // of a ball around centre that holds the node
+    double area = 0.0;
+    bool cluster = false;
+    glm::dvec3 normal{0.0};          // elements only
+    std::array<double, 6> facing{};  // clusters only: see ClusterHierarchy::Cluster
+};
+
+// The area a cluster's surfaces present towards the unit direction d (their fronts facing it).
+double projected_area(const std::array<double, 6>& facing, const glm::dvec3& d);
+
+ConvexPolygon element_polygon(const ElementTree& tree, std::uint32_t element);
+NodeShape node_shape(const ClusterHierarchy& h, std::uint32_t node);
+
+// The form factor bound of a transfer from `source` to `receiver`, per unit radiosity of the source and
+// per unit area of the receiver: A_s c_s c_r / (π d² + A_s), the disk approximation that stays finite as
+// the two draw close, with c = cos θ for an element and 1/4 (the mean projected share of randomly oriented
+// surfaces) for a cluster; 0 when an element faces away from the other. As a bound (`bound`), an element's
+// cosine is taken at the nearest approach of the other's ball, so a grazing pair is not dismissed, a
+// cluster's share is 1 (its contents may all face the other node), and with a cluster at either end the
+// distance is the gap between the two balls (the centres' distance understates the light between near
+// parts of large clusters).
+double link_factor(const NodeShape& receiver, const NodeShape& source, bool bound);
+
+// The factor of a link (ClusterLink::factor, before visibility): link_factor, but for a cluster receiver
+// without its own share, which its surfaces apply each by its cosine.
+double transfer_factor(const NodeShape& receiver, const NodeShape& source);
+
+// The cosine of a surface of normal n towards d as the clusters' six-direction summary reads it:
+// Σ_axis |d_axis| max(0, sign(d_axis) n_axis). Summed over a cluster's surfaces it is projected_area.
+double summary_cosine(const glm::dvec3& n, const glm::dvec3& d);
+
+// A point on the node's surfaces, area-uniform (for a cluster: a base patch chosen by area, then a point
+// on it), and that surface's normal.
+void sample_node(const ClusterHierarchy& h, std::span<const double> patch_area_prefix, std::uint32_t node,
+                 RandomStream& random, glm::dvec3& point, glm::dvec3& normal);
+
+}  // namespace rad

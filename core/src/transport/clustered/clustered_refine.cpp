@@ -1,0 +1,207 @@
+#include "transport/clustered/clustered_refine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <vector>
+
+#include "transport/clustered/cluster_geometry.hpp"
+#include "util/luminance.hpp"
+
+namespace rad {
+
+namespace {
+
+double max_channel(const glm::dvec3& v) {
+    return std::max({v.x, v.y, v.z});
+}
+
+class Refiner {
+  public:
+    Refiner(ClusterHierarchy& h, const RayScene& rays, double offset, const ClusteredOptions& options,
+            ClusteredReport& report)
+        : h_(h), rays_(rays), offset_(offset), options_(options), report_(report) {
+        prepare_estimates();
+    }
+
+    void run(Progress* progress) {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{
+            {ClusterNode::cluster(0), ClusterNode::cluster(0)}};
+        std::size_t visited = 0;
+        while (!stack.empty()) {
+            const auto [r, s] = stack.back();
+            stack.pop_back();
+            if ((++visited & 0xfff) == 0 && progress && progress->cancelled()) throw Cancelled{};
+            consider(r, s, stack);
+        }
+    }
+
+  private:
+    // Per cluster: the largest reflectance of its contents and its mean emitted luminance; and the scene's
+    // mean radiosity, estimated before any solve as its mean emission over (1 − its mean reflectance): exact
+    // for a closed furnace.
+    void prepare_estimates() {
+        const std::size_t patches = h_.tree.base_size();
+        area_prefix_.assign(h_.patch_order.size() + 1, 0.0);
+        double area = 0.0, emitted = 0.0, reflected = 0.0;
+        for (std::size_t k = 0; k < h_.patch_order.size(); ++k) {
+            const std::uint32_t p = h_.patch_order[k];
+            const double a = h_.tree[p].shape.area;
+            area_prefix_[k + 1] = area_prefix_[k] + a;
+            area += a;
+            emitted += a * luminance(h_.emission[p]);
+            reflected += a * luminance(h_.reflectance[p]);
+        }
+        (void)patches;
+        const double rho = area > 0.0 ? reflected / area : 0.0;
+        const double mean_emission = area > 0.0 ? emitted / area : 0.0;
+        ambient_ = mean_emission * rho / std::max(1e-3, 1.0 - rho);
+        epsilon_ = options_.tolerance * mean_emission / std::max(1e-3, 1.0 - rho);
+        cluster_rho_.assign(h_.clusters.size(), 0.0);
+        cluster_emission_.assign(h_.clusters.size(), 0.0);
+        for (std::size_t c = h_.clusters.size(); c-- > 0;) {
+            const ClusterHierarchy::Cluster& cluster = h_.clusters[c];
+            double e = 0.0, rho_max = 0.0;
+            for (std::uint32_t k = cluster.patch_begin; k < cluster.patch_end; ++k) {
+                const std::uint32_t p = h_.patch_order[k];
+                e += h_.tree[p].shape.area * luminance(h_.emission[p]);
+                rho_max = std::max(rho_max, max_channel(h_.reflectance[p]));
+            }
+            cluster_rho_[c] = rho_max;
+            cluster_emission_[c] = cluster.area > 0.0 ? e / cluster.area : 0.0;
+        }
+    }
+
+    double reflectance_of(std::uint32_t node) const {
+        const std::uint32_t i = ClusterNode::index(node);
+        return ClusterNode::is_cluster(node) ? cluster_rho_[i] : max_channel(h_.reflectance[i]);
+    }
+    double radiosity_estimate(std::uint32_t node) const {
+        const std::uint32_t i = ClusterNode::index(node);
+        return (ClusterNode::is_cluster(node) ? cluster_emission_[i] : luminance(h_.emission[i])) + ambient_;
+    }
+
+    bool can_split(std::uint32_t node) const {
+        if (ClusterNode::is_cluster(node)) return true;
+        const std::uint32_t e = ClusterNode::index(node);
+        return !h_.tree[e].is_leaf() || h_.tree.longest_edge(e) > 2.0 * report_.min_patch_size;
+    }
+
+    // The node's children: a cluster's child clusters, a leaf cluster's base patches, an element's quarters
+    // (splitting it first).
+    void children(std::uint32_t node, std::vector<std::uint32_t>& out) {
+        out.clear();
+        const std::uint32_t i = ClusterNode::index(node);
+        if (ClusterNode::is_cluster(node)) {
+            const ClusterHierarchy::Cluster& c = h_.clusters[i];
+            if (c.child_count > 0) {
+                for (std::uint32_t k = 0; k < c.child_count; ++k)
+                    out.push_back(ClusterNode::cluster(c.first_child + k));
+            } else {
+                for (std::uint32_t k = c.patch_begin; k < c.patch_end; ++k) out.push_back(h_.patch_order[k]);
+            }
+            return;
+        }
+        if (h_.tree[i].is_leaf()) {
+            const std::uint32_t first = h_.tree.split(i);
+            for (int k = 0; k < 4; ++k) {
+                h_.reflectance.push_back(h_.reflectance[i]);
+                h_.emission.push_back(h_.emission[i]);
+            }
+            (void)first;
+        }
+        const std::uint32_t first = h_.tree[i].first_child;
+        for (std::uint32_t k = 0; k < 4; ++k) out.push_back(first + k);
+    }
+
+    // Planar elements see nothing behind their plane.
+    static bool behind(const NodeShape& element, const NodeShape& other) {
+        return !element.cluster && glm::dot(element.normal, other.centre - element.centre) <= -other.radius;
+    }
+
+    void consider(std::uint32_t r, std::uint32_t s,
+                  std::vector<std::pair<std::uint32_t, std::uint32_t>>& stack) {
+        if (r == s) {
+            if (!ClusterNode::is_cluster(r)) return;  // a planar element does not light itself
+            children(r, scratch_);
+            for (std::uint32_t a : scratch_)
+                for (std::uint32_t b : scratch_) stack.emplace_back(a, b);
+            return;
+        }
+        const NodeShape receiver = node_shape(h_, r), source = node_shape(h_, s);
+        if (behind(receiver, source) || behind(source, receiver)) return;
+        const double bound = link_factor(receiver, source, true);
+        if (!(bound > 0.0)) return;
+        // A cluster's transfer holds only to what lies outside it.
+        const double distance = glm::length(source.centre - receiver.centre);
+        const bool close = (receiver.cluster || source.cluster) && distance < receiver.radius + source.radius;
+        const double error = reflectance_of(r) * radiosity_estimate(s) * bound;
+        const bool wanted = close || error > epsilon_;
+        const bool budget = h_.links.size() < options_.max_links;
+        if (wanted && budget) {
+            const bool split_receiver = receiver.radius >= source.radius ? can_split(r) : !can_split(s);
+            if (split_receiver && can_split(r)) {
+                children(r, scratch_);
+                for (std::uint32_t c : scratch_) stack.emplace_back(c, s);
+                return;
+            }
+            if (can_split(s)) {
+                children(s, scratch_);
+                for (std::uint32_t c : scratch_) stack.emplace_back(r, c);
+                return;
+            }
+        }
+        if (wanted && !budget) report_.limited = true;
+        const double factor = transfer_factor(receiver, source);
+        if (!(factor > 0.0)) return;
+        const double visible = visibility(r, s);
+        if (visible > 0.0) {
+            const glm::dvec3 direction =
+                distance > 0.0 ? (source.centre - receiver.centre) / distance : glm::dvec3(0.0);
+            h_.links.push_back({r, s, static_cast<float>(factor * visible), glm::vec3(direction)});
+            if (receiver.cluster || source.cluster) ++report_.cluster_links;
+        }
+    }
+
+    // The share of shadow rays between random points of the two that nothing blocks.
+    double visibility(std::uint32_t r, std::uint32_t s) {
+        const int n = std::max(1, options_.visibility_rays);
+        RandomStream random(options_.seed, r, s);
+        rays_buffer_.clear();
+        for (int k = 0; k < n; ++k) {
+            glm::dvec3 from, from_normal, to, to_normal;
+            sample_node(h_, area_prefix_, r, random, from, from_normal);
+            sample_node(h_, area_prefix_, s, random, to, to_normal);
+            // Each end leaves its surface on the side that faces the other.
+            from += offset_ * (glm::dot(from_normal, to - from) >= 0.0 ? from_normal : -from_normal);
+            to += offset_ * (glm::dot(to_normal, from - to) >= 0.0 ? to_normal : -to_normal);
+            rays_buffer_.push_back(Ray{from, 0.0f, to - from, 1.0f});
+        }
+        blocked_.resize(rays_buffer_.size());
+        rays_.occluded(rays_buffer_, blocked_);
+        report_.rays += rays_buffer_.size();
+        const auto open = std::count(blocked_.begin(), blocked_.end(), std::uint8_t{0});
+        return static_cast<double>(open) / static_cast<double>(rays_buffer_.size());
+    }
+
+    ClusterHierarchy& h_;
+    const RayScene& rays_;
+    const double offset_;
+    const ClusteredOptions& options_;
+    ClusteredReport& report_;
+    std::vector<double> area_prefix_;
+    std::vector<double> cluster_rho_, cluster_emission_;
+    double ambient_ = 0.0, epsilon_ = 0.0;
+    std::vector<std::uint32_t> scratch_;
+    std::vector<Ray> rays_buffer_;
+    std::vector<std::uint8_t> blocked_;
+};
+
+}  // namespace
+
+void refine_cluster_links(ClusterHierarchy& h, const RayScene& rays, double ray_offset,
+                          const ClusteredOptions& options, ClusteredReport& report, Progress* progress) {
+    Refiner(h, rays, ray_offset, options, report).run(progress);
+}
+
+}  // namespace rad

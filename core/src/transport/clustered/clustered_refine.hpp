@@ -1,0 +1,15 @@
+#pragma once
+
+// Refinement of the cluster hierarchy's links, from the root's link to itself. Private to the library.
+
+#include "rad/ray/ray_scene.hpp"
+#include "rad/transport/clustered/clustered_transport.hpp"
+
+namespace rad {
+
+// Makes h.links (unsorted): every pair of nodes that exchange light, at the level where the error bound of
+// the link is below the tolerance. Splits elements of h.tree as it goes (reflectance and emission follow).
+void refine_cluster_links(ClusterHierarchy& h, const RayScene& rays, double ray_offset,
+                          const ClusteredOptions& options, ClusteredReport& report, Progress* progress);
+
+}  // namespace rad
