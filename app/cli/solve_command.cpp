@@ -151,15 +151,16 @@ CommandRunner add_solve_command(CLI::App& app) {
     CLI::App* solve = app.add_subcommand(
         "solve", "Solve SCENE's radiosity and write per-patch results as JSON, or the solved state");
     add_pipeline_options(*solve, options->pipeline);
-    // At least one output, refused while parsing (as a missing --json was before --save existed).
-    CLI::Option_group* outputs =
-        solve->add_option_group("outputs", "What solve writes: --json, --save or both");
-    outputs->add_option("--json", options->json_path, "Where to write the per-patch results and statistics");
-    outputs->add_option(
-        "--save", options->save_path,
-        "Where to write the solved state (FILE.radiosity), which render and view show without "
-        "solving again");
-    outputs->require_option(1, 0);
+    solve->add_option("--json", options->json_path, "Where to write the per-patch results and statistics");
+    solve->add_option("--save", options->save_path,
+                      "Where to write the solved state (FILE.radiosity), which render and view show without "
+                      "solving again");
+    // At least one output, refused while parsing (as a missing --json was before --save existed). Not a
+    // CLI11 option group: with one, some unknown short options sent its parser into an endless loop.
+    solve->final_callback([options] {
+        if (options->json_path.empty() && options->save_path.empty())
+            throw CLI::RequiredError("--json or --save");
+    });
     add_export_option(*solve, options->exports);
     add_exposure_option(*solve, options->exposure,
                         "--export only: the colours show radiance x 2^EXPOSURE (as render does)");
