@@ -46,24 +46,26 @@ SceneTransport adaptive(const Scene& scene, const PatchMesh& base, const Transpo
     return out;
 }
 
-SceneTransport hierarchical(const Scene& scene, const PatchMesh& base, const TransportSettings& settings,
-                            Progress* progress) {
-    std::unique_ptr<HierarchicalTransport> transport =
-        make_hierarchical_transport(scene, base, settings.hierarchical, progress);
+// A hierarchy's transport and its leaves, which it holds.
+SceneTransport with_leaves(std::unique_ptr<Transport> transport, const PatchMesh& leaves) {
     SceneTransport out;
-    out.patches = &transport->system().leaf_patches;
+    out.patches = &leaves;
     out.transport = std::move(transport);
     return out;
 }
 
+SceneTransport hierarchical(const Scene& scene, const PatchMesh& base, const TransportSettings& settings,
+                            Progress* progress) {
+    auto transport = make_hierarchical_transport(scene, base, settings.hierarchical, progress);
+    const PatchMesh& leaves = transport->system().leaf_patches;
+    return with_leaves(std::move(transport), leaves);
+}
+
 SceneTransport clustered(const Scene& scene, const PatchMesh& base, const TransportSettings& settings,
                          Progress* progress) {
-    std::unique_ptr<ClusteredTransport> transport =
-        make_clustered_transport(scene, base, settings.clustered, progress);
-    SceneTransport out;
-    out.patches = &transport->hierarchy().leaf_patches;
-    out.transport = std::move(transport);
-    return out;
+    auto transport = make_clustered_transport(scene, base, settings.clustered, progress);
+    const PatchMesh& leaves = transport->hierarchy().leaf_patches;
+    return with_leaves(std::move(transport), leaves);
 }
 
 }  // namespace

@@ -17,12 +17,6 @@ bool finite_non_negative(const glm::dvec3& v) {
 
 }  // namespace
 
-double TransportReport::detail(const std::string& name, double fallback) const {
-    for (const TransportDetail& d : details)
-        if (d.name == name) return d.value;
-    return fallback;
-}
-
 void validate_elements(const Transport& transport) {
     const std::size_t n = transport.size();
     if (n == 0) throw std::invalid_argument("radiosity system: no patches");

@@ -29,9 +29,6 @@ struct TransportReport {
     std::size_t form_factor_passes = 0;  // how many times the scene's interactions were computed
     std::vector<TransportDetail> details;
     std::string notes;  // one line for people (adaptive passes, limits reached), or empty
-
-    // The detail of that name, or `fallback`.
-    double detail(const std::string& name, double fallback = 0.0) const;
 };
 
 // Light transport between the elements the solution is indexed by (patches, or the leaves of a hierarchy):

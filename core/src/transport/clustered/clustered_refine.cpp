@@ -41,7 +41,6 @@ class Refiner {
     // mean radiosity, estimated before any solve as its mean emission over (1 − its mean reflectance): exact
     // for a closed furnace.
     void prepare_estimates() {
-        const std::size_t patches = h_.tree.base_size();
         area_prefix_.assign(h_.patch_order.size() + 1, 0.0);
         double area = 0.0, emitted = 0.0, reflected = 0.0;
         for (std::size_t k = 0; k < h_.patch_order.size(); ++k) {
@@ -52,7 +51,6 @@ class Refiner {
             emitted += a * luminance(h_.emission[p]);
             reflected += a * luminance(h_.reflectance[p]);
         }
-        (void)patches;
         const double rho = area > 0.0 ? reflected / area : 0.0;
         const double mean_emission = area > 0.0 ? emitted / area : 0.0;
         ambient_ = mean_emission * rho / std::max(1e-3, 1.0 - rho);
@@ -103,12 +101,11 @@ class Refiner {
             return;
         }
         if (h_.tree[i].is_leaf()) {
-            const std::uint32_t first = h_.tree.split(i);
+            h_.tree.split(i);
             for (int k = 0; k < 4; ++k) {
                 h_.reflectance.push_back(h_.reflectance[i]);
                 h_.emission.push_back(h_.emission[i]);
             }
-            (void)first;
         }
         const std::uint32_t first = h_.tree[i].first_child;
         for (std::uint32_t k = 0; k < 4; ++k) out.push_back(first + k);

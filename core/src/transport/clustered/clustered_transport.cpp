@@ -19,6 +19,7 @@
 #include "sampling/sampling.hpp"
 #include "transport/clustered/cluster_geometry.hpp"
 #include "transport/clustered/clustered_refine.hpp"
+#include "transport/refinement_settings.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad {
@@ -27,15 +28,6 @@ namespace {
 
 // Rays per leaf that measure its form factor to the whole scene.
 constexpr std::size_t kReachRays = 64;
-
-void check_options(const ClusteredOptions& o) {
-    if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance))
-        throw SettingError("refine_tolerance", "must be a positive number");
-    if (!(o.min_patch_size >= 0.0) || !std::isfinite(o.min_patch_size))
-        throw SettingError("min_patch_size", "must be a non-negative number");
-    if (o.visibility_rays < 1 || o.visibility_rays > 4096)
-        throw SettingError("visibility_rays", "shadow rays per cluster link must lie in [1, 4096]");
-}
 
 Box patch_box(const PatchMesh& base, std::uint32_t p) {
     Box box{base.points[base.corners[p][0]], base.points[base.corners[p][0]]};
@@ -312,7 +304,7 @@ TransportReport ClusteredTransport::report() const {
 std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene, const PatchMesh& base,
                                                              const ClusteredOptions& options,
                                                              Progress* progress) {
-    check_options(options);
+    check_refinement_settings(options.tolerance, options.min_patch_size, options.visibility_rays);
     const Stopwatch clock;
     auto h = std::make_unique<ClusterHierarchy>(base);
     for (const Patch& p : base.patches) {

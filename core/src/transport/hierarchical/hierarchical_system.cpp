@@ -9,6 +9,7 @@
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
 #include "ray/coverage.hpp"
+#include "transport/refinement_settings.hpp"
 #include "transport/hierarchical/hierarchical_refine.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 #include "transport/uniform/form_factors_memory.hpp"
@@ -25,12 +26,7 @@ constexpr int kRoundSteps = 64;
 constexpr double kRoundTolerance = 1e-3;
 
 void check_options(const HierarchicalOptions& o, std::size_t base_patches) {
-    if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance))
-        throw SettingError("refine_tolerance", "must be a positive number");
-    if (!(o.min_patch_size >= 0.0) || !std::isfinite(o.min_patch_size))
-        throw SettingError("min_patch_size", "must be a non-negative number");
-    if (o.visibility_rays < 1 || o.visibility_rays > 4096)
-        throw SettingError("visibility_rays", "shadow rays per hierarchical link must lie in [1, 4096]");
+    check_refinement_settings(o.tolerance, o.min_patch_size, o.visibility_rays);
     if (base_patches > kMaxBasePatches) {
         throw SettingError("subdivision", "hierarchical links every pair of base patches, and " +
                                               std::to_string(base_patches) + " base patches are more than " +
