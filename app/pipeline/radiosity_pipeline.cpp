@@ -1,6 +1,7 @@
 #include "pipeline/radiosity_pipeline.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "pipeline/form_factor_options.hpp"
 #include "rad/util/error.hpp"
@@ -35,12 +36,28 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
     subdivision_ = parse_subdivision(options.subdivision.method);
     method_ = solver_method(options.solver);
     // Bad options fail before the long work.
-    if (!automatic_method(options.solver)) check_solver_supported(method_, has_matrix(subdivision_));
+    const bool automatic = subdivision_ == Subdivision::automatic;
+    if (!automatic_method(options.solver) && !automatic)
+        check_solver_supported(method_, has_matrix(subdivision_));
     check_solver_options(rad::solver_options(options.solver, 1));
     const Stopwatch clock;
     loaded_ = load_and_mesh(options.scene, base_patch_scale(subdivision_));
+    if (automatic) choose_automatic_subdivision();
     seconds_.mesh = clock.seconds();
     solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
+}
+
+void RadiosityPipeline::choose_automatic_subdivision() {
+    subdivision_ = choose_subdivision(Subdivision::automatic, loaded_.patches.size());
+    options_.subdivision.method = std::string(subdivision_name(subdivision_));
+    if (!automatic_method(options_.solver)) check_solver_supported(method_, has_matrix(subdivision_));
+    // Clustering's base patches are larger, unless the command line gave their size.
+    if (subdivision_ != Subdivision::uniform && options_.scene.patch_size <= 0.0) {
+        loaded_.patch_size *= base_patch_scale(subdivision_);
+        MeshingOptions meshing;
+        meshing.patch_size = loaded_.patch_size;
+        loaded_.patches = build_patches(loaded_.scene, meshing);
+    }
 }
 
 RadiosityPipeline::RadiosityPipeline(SavedSolution saved, const std::string& path,
@@ -122,6 +139,10 @@ TransportSettings RadiosityPipeline::transport_settings() const {
     settings.adaptive = adaptive_options(options_.subdivision, options_.form_factors.seed);
     settings.hierarchical =
         hierarchical_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
+    // One memory budget, --max-memory, for the form factors and the links alike.
+    settings.hierarchical.max_memory_bytes = settings.form_factors.max_memory_bytes;
+    settings.hierarchical.patch_size = settings.form_factors.patch_size;
+    settings.hierarchical.count_patches_at = settings.form_factors.count_patches_at;
     settings.clustered =
         clustered_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
     // An automatic choice solves the passes by bounces; the final solver is chosen once the transport is

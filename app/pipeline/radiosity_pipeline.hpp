@@ -104,6 +104,9 @@ class RadiosityPipeline {
   private:
     TransportSettings transport_settings() const;
     void continue_saved();
+    // --subdivision auto: uniform patches or clustering by the uniform mesh's size (choose_subdivision),
+    // and clustering's larger base patches.
+    void choose_automatic_subdivision();
 
     PipelineOptions options_;
     std::optional<SavedSolution> saved_;

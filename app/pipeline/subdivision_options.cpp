@@ -1,5 +1,8 @@
 #include "pipeline/subdivision_options.hpp"
 
+#include <string>
+#include <vector>
+
 #include "cli/number_checks.hpp"
 #include "pipeline/scene_options.hpp"
 #include "rad/util/error.hpp"
@@ -13,28 +16,48 @@ double base_patch_scale(Subdivision subdivision) {
         case Subdivision::hierarchical:
         case Subdivision::clustered:
             return kHierarchicalBaseScale;
+        case Subdivision::automatic:  // meshed as uniform first (choose_subdivision)
         case Subdivision::uniform:
             break;
     }
     return 1.0;
 }
 
+std::string subdivision_names(const std::string& separator) {
+    std::string names;
+    for (Subdivision s : all_subdivisions())
+        names += (names.empty() ? "" : separator) + std::string(subdivision_name(s));
+    return names;
+}
+
 Subdivision parse_subdivision(const std::string& name) {
     for (Subdivision s : all_subdivisions())
         if (name == subdivision_name(s)) return s;
-    throw InputError("--subdivision: unknown method '" + name +
-                     "' (uniform, adaptive, hierarchical, clustered)");
+    throw InputError("--subdivision: unknown method '" + name + "' (" + subdivision_names(", ") + ")");
 }
+
+namespace {
+
+std::vector<std::string> subdivision_name_list() {
+    std::vector<std::string> names;
+    for (Subdivision s : all_subdivisions()) names.emplace_back(subdivision_name(s));
+    return names;
+}
+
+}  // namespace
 
 void add_subdivision_options(CLI::App& command, SubdivisionOptions& options) {
     command
-        .add_option("--subdivision", options.method,
-                    "How patches are made: uniform (one size), adaptive (split where the light changes, then "
-                    "solved again; --patch-size is the first size, by default twice the uniform one), "
-                    "hierarchical (a quadtree of elements linked where needed; --patch-size is the base "
-                    "patch size, by default 4 times the uniform one) or clustered (hierarchical with volume "
-                    "clusters over the base patches, for scenes of many faces; base patches as hierarchical)")
-        ->check(CLI::IsMember({"uniform", "adaptive", "hierarchical", "clustered"}))
+        .add_option(
+            "--subdivision", options.method,
+            "How patches are made: auto (uniform up to " + std::to_string(kAutomaticUniformPatches) +
+                " patches at the uniform size, clustered beyond), uniform (one size), adaptive (split where "
+                "the light changes, then "
+                "solved again; --patch-size is the first size, by default twice the uniform one), "
+                "hierarchical (a quadtree of elements linked where needed; --patch-size is the base "
+                "patch size, by default 4 times the uniform one) or clustered (hierarchical with volume "
+                "clusters over the base patches, for scenes of many faces; base patches as hierarchical)")
+        ->check(CLI::IsMember(subdivision_name_list()))
         ->capture_default_str();
     command
         .add_option("--refine-tol", options.tolerance,

@@ -9,12 +9,15 @@
 namespace rad {
 
 struct SubdivisionOptions {
-    std::string method = "uniform";
+    std::string method = "auto";
     double tolerance = 0.0;       // --refine-tol; 0 picks the method's default
     double min_patch_size = 0.0;  // --min-patch-size; 0 picks the method's default
 };
 
 void add_subdivision_options(CLI::App& command, SubdivisionOptions& options);
+
+// The subdivisions' names, joined by `separator`.
+std::string subdivision_names(const std::string& separator);
 
 // Throws InputError naming --subdivision for an unknown name.
 Subdivision parse_subdivision(const std::string& name);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,7 +46,12 @@ struct ViewerRadiance {
 
 // Figures for the panel, small enough to copy every frame.
 struct ViewerStatistics {
-    std::string scene;
+    std::string scene;  // what is open: a scene, or a saved solution (FILE.radiosity)
+    // While a saved solution is open, the options it was solved with, their scene the one it was solved
+    // from: what "Re-mesh and recompute" starts from. Empty for a scene.
+    std::optional<PipelineOptions> saved_options;
+    std::string remesh_unavailable;  // why those cannot be recomputed (the scene file is gone), or empty
+    std::uint64_t opened = 0;        // scenes and saved solutions opened so far
     std::size_t patches = 0;
     std::size_t interactions = 0;  // the transport's form factors, or links
     std::string interaction_name;  // "form factors", "links"

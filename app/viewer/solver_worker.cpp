@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <filesystem>
+#include <system_error>
 
 #include "rad/camera/camera_view.hpp"
 #include "rad/display/display_outline.hpp"
@@ -37,6 +39,38 @@ std::vector<glm::dvec3> positive_difference(std::span<const glm::dvec3> now,
     for (std::size_t i = 0; i < now.size(); ++i)
         difference[i] = glm::max(now[i] - before[i], glm::dvec3(0.0));
     return difference;
+}
+
+// The options a saved solution was solved with, as the panel edits them, over `base` (the memory budget, the
+// display). The same mapping as RadiosityPipeline's saved-solution constructor.
+PipelineOptions options_from_saved(const SavedSettings& s, const PipelineOptions& base) {
+    PipelineOptions options = base;
+    options.scene.scene = s.scene_source;
+    options.scene.patch_size = s.patch_size;
+    options.form_factors.method =
+        s.form_factor_method == "analytic" ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
+    options.form_factors.rays = static_cast<int>(s.rays);
+    options.form_factors.seed = s.seed;
+    options.form_factors.enforce_reciprocity = s.reciprocity;
+    options.form_factors.normalize_rows = s.normalize_rows;
+    options.subdivision.method = s.subdivision;
+    options.subdivision.tolerance = s.refine_tolerance;
+    options.subdivision.min_patch_size = s.min_patch_size;
+    options.solver.method = s.solver;
+    options.solver.tolerance = s.tolerance;
+    options.solver.bounces = s.bounces;
+    options.solver.initial = s.initial;
+    options.solver.relaxation = s.relaxation;
+    return options;
+}
+
+// Re-meshing a saved solution loads the scene it was solved from, which the file names but does not hold as
+// a file: it may have moved since.
+std::string missing_scene(const std::string& source) {
+    if (source.starts_with("builtin:")) return {};
+    std::error_code error;
+    if (std::filesystem::is_regular_file(source, error)) return {};
+    return "the scene this solution was solved from, " + source + ", is not found";
 }
 
 }  // namespace
@@ -193,15 +227,32 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     progress_->begin("loading and meshing", 0);
     // A saved solution is shown at once; its transport is rebuilt behind it, so stepping can continue.
     const bool saved = is_saved_solution_path(options.scene.scene);
-    auto pipeline = saved ? std::make_unique<RadiosityPipeline>(read_saved_solution(options.scene.scene),
-                                                                options.scene.scene, options.display)
-                          : std::make_unique<RadiosityPipeline>(options);
-    if (options.scene.scene != options_.scene.scene || !pipeline_) ++scene_version_;
+    std::unique_ptr<RadiosityPipeline> pipeline;
+    std::optional<PipelineOptions> saved_options;
+    std::size_t saved_steps = 0;
+    if (saved) {
+        SavedSolution solution = read_saved_solution(options.scene.scene);
+        saved_options = options_from_saved(solution.settings, options);
+        saved_steps = solution.report.steps;
+        pipeline =
+            std::make_unique<RadiosityPipeline>(std::move(solution), options.scene.scene, options.display);
+    } else {
+        pipeline = std::make_unique<RadiosityPipeline>(options);
+    }
+    // Nothing changed before here, so a file that cannot be opened leaves the previous scene shown.
+    const std::string scene = saved_options ? saved_options->scene.scene : options.scene.scene;
+    if (scene != shown_scene_ || !pipeline_) ++scene_version_;
+    shown_scene_ = scene;
     const DisplayOptions display = options_.display;
     const bool had_pipeline = pipeline_ != nullptr;
     options_ = options;
     if (had_pipeline) options_.display = display;  // a smooth/flat choice made since the start stays
     pipeline_ = std::move(pipeline);
+    solver_ready_ = false;
+    step_offset_ = 0;
+    saved_options_ = std::move(saved_options);
+    remesh_unavailable_ = saved_options_ ? missing_scene(saved_options_->scene.scene) : std::string();
+    ++opened_;
     display_ = build_display_mesh(pipeline_->patches(), options_.display);
     start_bounce_history();
     set_can_step(false);
@@ -213,7 +264,9 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     }
     publish_statistics();
     pipeline_->prepare(progress_.get());
-    if (&pipeline_->patches() != &pipeline_->loaded().patches) {
+    solver_ready_ = true;
+    // A saved solution's rebuilt elements were checked to be the saved ones, which are drawn already.
+    if (!saved && &pipeline_->patches() != &pipeline_->loaded().patches) {
         // The transport's elements are new patches (adaptive or hierarchical leaves): new geometry to draw.
         display_ = build_display_mesh(pipeline_->patches(), options_.display);
         publish(true, false);
@@ -223,6 +276,7 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
         return;
     }
     // The pipeline's solver continues from the saved radiosity; a reset would start it from the emission.
+    step_offset_ = saved_steps;
     start_bounce_history();
     add_bounce(pipeline_->solver().display_solution());
     history_residual_.clear();
@@ -234,11 +288,13 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
 void SolverWorker::reset_solver(const Reset& reset) {
     if (!pipeline_) return;
     pipeline_->prepare(progress_.get());
+    solver_ready_ = true;
     options_.solver.method = reset.method;
     options_.solver.tolerance = reset.tolerance;
     SolverOptions solver_options = rad::solver_options(options_.solver, pipeline_->patches().size());
     if (reset.from_emission) solver_options.initial = InitialGuess::emission;
     pipeline_->restart_solver(solver_method(options_.solver), solver_options);
+    step_offset_ = 0;
     start_bounce_history();
     add_bounce(pipeline_->solver().display_solution());  // step 0: the emission is the newest light
     history_residual_.clear();
@@ -250,7 +306,7 @@ void SolverWorker::reset_solver(const Reset& reset) {
 }
 
 void SolverWorker::take_step() {
-    if (!pipeline_ || !pipeline_->work().form_factor_passes) return;
+    if (!pipeline_ || !solver_ready_) return;
     const std::vector<glm::dvec3> before = pipeline_->solver().display_solution();
     const StepReport report = pipeline_->step();
     add_bounce(positive_difference(pipeline_->solver().display_solution(), before));
@@ -274,7 +330,7 @@ void SolverWorker::switch_colour_mode(ColourMode mode) {
         vertex_bounces_[i] =
             std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce_history_[i]));
     }
-    publish(true, pipeline_->work().form_factor_passes > 0);
+    publish(true, solver_ready_ || pipeline_->saved());
 }
 
 void SolverWorker::start_bounce_history() {
@@ -323,8 +379,8 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
         } else {
             radiance->cumulative = vertex_radiance(display_, pipeline_->solver().display_solution());
             radiance->bounces.assign(vertex_bounces_.begin(), vertex_bounces_.end());
-            radiance->first_bounce = first_bounce_;
-            radiance->step = pipeline_->solver().report().step;
+            radiance->first_bounce = step_offset_ + first_bounce_;
+            radiance->step = step_offset_ + pipeline_->solver().report().step;
         }
     }
     std::lock_guard lock(mutex_);
@@ -336,12 +392,15 @@ void SolverWorker::publish_statistics() {
     ViewerStatistics statistics;
     if (pipeline_) {
         statistics.scene = options_.scene.scene;
+        statistics.saved_options = saved_options_;
+        statistics.remesh_unavailable = remesh_unavailable_;
+        statistics.opened = opened_;
         statistics.patches = pipeline_->patches().size();
         statistics.subdivision = std::string(subdivision_name(pipeline_->subdivision()));
         statistics.patch_size = pipeline_->loaded().patch_size;
         statistics.seconds = pipeline_->seconds();
         statistics.method = pipeline_->method();
-        statistics.prepared = pipeline_->work().form_factor_passes > 0;
+        statistics.prepared = solver_ready_;
         statistics.form_factor_passes = pipeline_->work().form_factor_passes;
         if (statistics.prepared) {
             const TransportReport transport = pipeline_->transport().report();

@@ -97,7 +97,15 @@ class SolverWorker {
     std::vector<float> history_residual_;
     std::vector<float> history_unshot_;
     std::string scene_name_;
+    std::string shown_scene_;  // the scene drawn (a saved solution's own), which keeps the view when reopened
     std::uint64_t scene_version_ = 0;
+    std::uint64_t opened_ = 0;
+    std::optional<PipelineOptions> saved_options_;  // see ViewerStatistics::saved_options
+    std::string remesh_unavailable_;
+    // A saved solution continues from its own step count (the pipeline's solver counts from 0 again).
+    std::size_t step_offset_ = 0;
+    // The pipeline has a solver: prepare() returned (it can throw after counting a form-factor pass).
+    bool solver_ready_ = false;
     tbb::task_arena arena_;  // where the work's parallel stages run
     std::thread thread_;     // last, so it starts after everything it uses exists
 };

@@ -4,6 +4,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,12 +13,24 @@ namespace rad {
 namespace {
 
 constexpr const char* kFormFactorNames[] = {"hemisphere", "analytic"};
-constexpr const char* kSubdivisionNames[] = {"uniform", "adaptive", "hierarchical", "clustered"};
 
 std::vector<std::string> solver_names() {
     std::vector<std::string> names;
     for (const SolverMethod method : all_solver_methods()) names.emplace_back(solver_method_name(method));
     return names;
+}
+
+// The core's list, so that a subdivision added there appears here without touching the panel.
+std::vector<std::string> subdivision_names() {
+    std::vector<std::string> names;
+    for (const Subdivision subdivision : all_subdivisions())
+        names.emplace_back(subdivision_name(subdivision));
+    return names;
+}
+
+int index_of(const std::vector<std::string>& names, const std::string& name) {
+    const auto found = std::find(names.begin(), names.end(), name);
+    return found == names.end() ? 0 : static_cast<int>(found - names.begin());
 }
 
 bool combo(const char* label, int& index, const std::vector<std::string>& names) {
@@ -49,16 +62,29 @@ void plot(const char* label, const std::vector<float>& values) {
 
 ViewerPanel::ViewerPanel(const PipelineOptions& options)
     : options_(options), scene_path_(options.scene.scene) {
-    const std::vector<std::string> names = solver_names();
-    const auto found = std::find(names.begin(), names.end(), options.solver.method);
-    method_index_ = found == names.end() ? 0 : static_cast<int>(found - names.begin());
-    form_factor_index_ = options.form_factors.method == FormFactorMethod::analytic ? 1 : 0;
-    subdivision_index_ = static_cast<int>(parse_subdivision(options.subdivision.method));
+    show_options();
+}
+
+void ViewerPanel::show_options() {
+    method_index_ = index_of(solver_names(), options_.solver.method);
+    form_factor_index_ = options_.form_factors.method == FormFactorMethod::analytic ? 1 : 0;
+    subdivision_index_ = index_of(subdivision_names(), options_.subdivision.method);
 }
 
 PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const FrameTimer& frames) {
     PanelRequests requests;
     const SolverSnapshot snapshot = worker.snapshot();
+    if (snapshot.statistics.opened != opened_) {
+        opened_ = snapshot.statistics.opened;
+        // A saved solution's settings are what "Re-mesh and recompute" starts from, so the controls take
+        // them, once per opening so that edits made since stay.
+        if (const auto& saved = snapshot.statistics.saved_options) {
+            const DisplayOptions display = options_.display;
+            options_ = *saved;
+            options_.display = display;
+            show_options();
+        }
+    }
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("radiosity", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     draw_progress(worker);
@@ -116,9 +142,10 @@ void ViewerPanel::draw_solver(SolverWorker& worker, const SolverSnapshot& snapsh
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("A fresh solver (B = E) with the method and tolerance above");
     const std::size_t steps = snapshot.radiance ? snapshot.radiance->step : 0;
-    ImGui::Text(
-        "bounce %zu (%s), %s", steps, std::string(solver_method_name(statistics.method)).c_str(),
-        statistics.prepared ? std::string(solver_status_name(statistics.status)).c_str() : "not solved");
+    ImGui::Text("bounce %zu (%s), %s", steps, std::string(solver_method_name(statistics.method)).c_str(),
+                statistics.prepared        ? std::string(solver_status_name(statistics.status)).c_str()
+                : statistics.saved_options ? "saved"
+                                           : "not solved");
     if (!statistics.status_message.empty()) ImGui::TextWrapped("%s", statistics.status_message.c_str());
     ImGui::PushID("residual");
     plot("residual", statistics.log_residual);
@@ -177,21 +204,37 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
     ImGui::InputText("scene", &scene_path_);
     ImGui::SameLine();
     if (ImGui::Button("Open")) open_scene(worker, scene_path_);
-    ImGui::TextDisabled("or drop a .obj or .ply file on the window");
+    ImGui::TextDisabled("or drop a .obj, .ply or .radiosity (solve --save) file on the window");
     if (options_.scene.patch_size <= 0.0) options_.scene.patch_size = statistics.patch_size;
     ImGui::InputDouble("patch size", &options_.scene.patch_size, 0.0, 0.0, "%.4g");
     if (ImGui::Combo("form factors", &form_factor_index_, kFormFactorNames, 2)) {
         options_.form_factors.method =
             form_factor_index_ == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
     }
-    if (ImGui::Combo("subdivision", &subdivision_index_, kSubdivisionNames, 4)) {
-        options_.subdivision.method = kSubdivisionNames[subdivision_index_];
+    const std::vector<std::string> subdivisions = subdivision_names();
+    if (combo("subdivision", subdivision_index_, subdivisions)) {
+        options_.subdivision.method = subdivisions[static_cast<std::size_t>(subdivision_index_)];
         options_.scene.patch_size = 0.0;  // each method has its own default (hierarchical: base patches)
     }
+    // A saved solution is recomputed from the scene it was solved from.
+    const std::optional<PipelineOptions>& saved = statistics.saved_options;
+    ImGui::BeginDisabled(!statistics.remesh_unavailable.empty());
     if (ImGui::Button("Re-mesh and recompute")) {
         options_.solver.method = solver_names()[static_cast<std::size_t>(method_index_)];
-        options_.scene.scene = statistics.scene.empty() ? scene_path_ : statistics.scene;
+        options_.scene.scene = saved                      ? saved->scene.scene
+                               : statistics.scene.empty() ? scene_path_
+                                                          : statistics.scene;
         worker.request_rebuild(options_);
+    }
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        if (!statistics.remesh_unavailable.empty()) {
+            ImGui::SetTooltip("%s", statistics.remesh_unavailable.c_str());
+        } else if (saved) {
+            ImGui::SetTooltip(
+                "Solves %s again, the scene this solution was saved from, with the settings above",
+                saved->scene.scene.c_str());
+        }
     }
 }
 

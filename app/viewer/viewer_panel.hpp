@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "pipeline/radiosity_pipeline.hpp"
@@ -23,12 +24,14 @@ class ViewerPanel {
     explicit ViewerPanel(const PipelineOptions& options);
 
     PanelRequests draw(SolverWorker& worker, ViewSettings& view, const FrameTimer& frames);
-    // Loads another scene with the panel's patch size and form-factor method (the panel's Open, or a drop).
+    // Loads another scene with the panel's patch size and form-factor method, or a saved solution
+    // (FILE.radiosity) as it was saved (the panel's Open, or a drop).
     void open_scene(SolverWorker& worker, const std::string& path);
     // A line shown at the bottom of the panel (where a screenshot went, say).
     void set_message(const std::string& message) { message_ = message; }
 
   private:
+    void show_options();  // the controls' choices from options_
     void draw_solver(SolverWorker& worker, const SolverSnapshot& snapshot);
     void draw_progress(SolverWorker& worker);
     void draw_plot(const ViewerStatistics& statistics);
@@ -40,7 +43,8 @@ class ViewerPanel {
     PipelineOptions options_;  // the values the panel's controls edit
     int method_index_ = 0;
     int form_factor_index_ = 0;
-    int subdivision_index_ = 0;  // into uniform, adaptive, hierarchical
+    int subdivision_index_ = 0;  // the position in all_subdivisions()
+    std::uint64_t opened_ = 0;   // the worker's ViewerStatistics::opened last seen
     std::string scene_path_;
     std::string message_;
 };

@@ -19,9 +19,11 @@
 #include "rad/ray/ray_scene.hpp"
 #include "rad/scene/builtin_scenes.hpp"
 #include "rad/transport/adaptive/adaptive_subdivision.hpp"
+#include "rad/util/error.hpp"
 #include "transport/adaptive/adaptive_gradient.hpp"
 #include "transport/adaptive/adaptive_shadow.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
+#include "transport/uniform/form_factors_memory.hpp"
 
 namespace rad {
 namespace {
@@ -305,23 +307,45 @@ TEST(AdaptiveSubdivision, RespectsTheMinimumPatchSize) {
     EXPECT_GT(r.report.passes.back().too_small + r.report.passes[r.report.passes.size() - 2].too_small, 0u);
 }
 
-// max_patches: the leaves never exceed it; when the chosen splits do not all fit, the most important are
-// made, solved, and the loop ends.
-TEST(AdaptiveSubdivision, NeverExceedsMaxPatches) {
+// The memory budget of the form factors bounds the leaves: they never exceed the most whose pass fits
+// (form_factor_memory_estimate); when the chosen splits do not all fit, the most important are made, solved,
+// and the loop ends.
+TEST(AdaptiveSubdivision, NeverExceedsTheMemoryBudget) {
     const Scene scene = make_builtin_scene("cornell");
     const double extent = extent_of(scene);
     const std::size_t base = count_patches(scene, extent / 8);
-    const AdaptiveResult r =
-        adapt(scene, extent / 8, AdaptiveOptions{.max_passes = 4, .max_patches = base + 301});
-    EXPECT_EQ(r.report.stop, AdaptiveStop::max_patches);
+    FormFactorOptions ff;
+    ff.max_memory_bytes = form_factor_memory_estimate(base + 301, ff.method, kDefaultHemisphereRays);
+    EXPECT_EQ(adaptive_leaves_that_fit(ff), base + 301);
+    const AdaptiveResult r = adapt(scene, extent / 8, AdaptiveOptions{.max_passes = 4}, ff);
+    EXPECT_EQ(r.report.stop, AdaptiveStop::memory_budget);
     ASSERT_EQ(r.report.passes.size(), 2u);
-    EXPECT_EQ(r.report.passes[0].split, 100u);
+    EXPECT_EQ(r.report.passes[0].split, 100u);  // each split adds three leaves: 100 fit in 301
     EXPECT_EQ(r.patches.size(), base + 300);
 
-    const AdaptiveResult none = adapt(scene, extent / 8, AdaptiveOptions{.max_patches = base + 2});
-    EXPECT_EQ(none.report.stop, AdaptiveStop::max_patches);
+    ff.max_memory_bytes = form_factor_memory_estimate(base + 2, ff.method, kDefaultHemisphereRays);
+    const AdaptiveResult none = adapt(scene, extent / 8, AdaptiveOptions{}, ff);
+    EXPECT_EQ(none.report.stop, AdaptiveStop::memory_budget);
     EXPECT_EQ(none.report.passes.size(), 1u);
     EXPECT_EQ(none.patches.size(), base);
+}
+
+// No fixed cap on the leaves: beyond the 20,000 there once were, as many as the budget holds.
+TEST(AdaptiveSubdivision, TheLeafBoundIsTheBudgets) {
+    FormFactorOptions ff;
+    ff.max_memory_bytes = std::size_t{8} << 30;
+    const std::size_t fit = adaptive_leaves_that_fit(ff);
+    EXPECT_GT(fit, 20'000u);
+    EXPECT_LE(form_factor_memory_estimate(fit, ff.method, kDefaultHemisphereRays), ff.max_memory_bytes);
+    EXPECT_GT(form_factor_memory_estimate(fit + 1, ff.method, kDefaultHemisphereRays), ff.max_memory_bytes);
+    // Analytic rows hold every pair: far fewer leaves in the same budget, about sqrt(8 GB / 8 bytes).
+    ff.method = FormFactorMethod::analytic;
+    const std::size_t analytic = adaptive_leaves_that_fit(ff);
+    EXPECT_LT(analytic, fit);
+    EXPECT_LE(form_factor_memory_estimate(analytic, ff.method, kDefaultAnalyticRays), ff.max_memory_bytes);
+    EXPECT_GT(form_factor_memory_estimate(analytic + 1, ff.method, kDefaultAnalyticRays),
+              ff.max_memory_bytes);
+    EXPECT_LT(analytic, 32'800u);
 }
 
 TEST(AdaptiveSubdivision, RejectsBadOptions) {
@@ -333,10 +357,37 @@ TEST(AdaptiveSubdivision, RejectsBadOptions) {
                                  options);
         };
     };
-    test::expect_input_error(run({.max_patches = base.size() - 1}), "max patches", {"patch limit", "24"});
     test::expect_input_error(run({.tolerance = 0.0}), "tolerance", {"tolerance"});
     test::expect_input_error(run({.max_passes = 0}), "passes", {"pass"});
     test::expect_input_error(run({.min_patch_size = -1.0}), "min size", {"minimum patch size"});
+}
+
+// A base mesh whose own form factors exceed the budget is refused before any pass, with the figures and a
+// coarser patch size, as the uniform pass is.
+TEST(AdaptiveSubdivision, ABaseOverTheBudgetIsRefusedWithTheFigures) {
+    const Scene scene = make_cube();
+    const PatchMesh base = build_patches(scene, MeshingOptions{0.5});
+    ASSERT_EQ(base.size(), 24u);
+    FormFactorOptions ff;
+    ff.patch_size = 0.5;
+    ff.count_patches_at = [&scene](double size) { return count_patches(scene, size); };
+    ff.max_memory_bytes = form_factor_memory_estimate(23, ff.method, kDefaultHemisphereRays);
+    Progress progress;
+    try {
+        subdivide_adaptively(scene, base, ff, SolverMethod::jacobi, SolverOptions{}, AdaptiveOptions{},
+                             &progress);
+        FAIL() << "a budget one patch short was accepted";
+    } catch (const MemoryBudgetError& e) {
+        EXPECT_EQ(e.patches, 24u);
+        EXPECT_EQ(e.needed_bytes, form_factor_memory_estimate(24, ff.method, kDefaultHemisphereRays));
+        EXPECT_EQ(e.budget_bytes, ff.max_memory_bytes);
+        // 24 patches of 0.5 become 6 of 1.0: the next size up that fits.
+        EXPECT_GT(e.coarser_patch_size, 0.5);
+        EXPECT_LE(form_factor_memory_estimate(count_patches(scene, e.coarser_patch_size), ff.method,
+                                              kDefaultHemisphereRays),
+                  ff.max_memory_bytes);
+    }
+    EXPECT_EQ(progress.state().stage, "") << "refused before any pass began";
 }
 
 TEST(AdaptiveSubdivision, StopsWhenCancelled) {

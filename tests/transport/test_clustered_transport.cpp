@@ -5,10 +5,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 
+#include "rad/scene/builtin_scenes.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/scene_transport.hpp"
-#include "sphere_room.hpp"
 
 namespace rad {
 namespace {
@@ -22,7 +23,14 @@ struct Furnace {
 
 Furnace furnace(int spheres, int segments) {
     const double rho = 0.5, e = 1.0;
-    const Scene scene = test::sphere_room(spheres, segments, rho, e);
+    SphereRoom room;
+    room.spheres = spheres;
+    room.segments = segments;
+    room.reflectance = rho;
+    room.emitted_radiosity = e;
+    room.triangles = true;  // closed triangle meshes, as builtin:furnace makes them
+    room.shared_corners = true;
+    const Scene scene = make_sphere_room(room);
     const PatchMesh base = build_patches(scene, MeshingOptions{0.25});
     TransportSettings settings;
     settings.subdivision = Subdivision::clustered;
@@ -63,6 +71,45 @@ TEST(Clustered, LinksGrowFarSlowerThanPairs) {
     EXPECT_GT(faces, 10.0);
     EXPECT_LT(links, 4.0 * faces);
     EXPECT_LT(large.links, large.faces * large.faces / 20);
+}
+
+// The white room is closed, and its two boxes stand on the floor without bottoms: the floor under them is
+// covered, not a hole. Clustering must lose no light there (the covered parts neither gather nor send) and
+// agree with uniform patches on every wall.
+TEST(Clustered, ClosedRoomWithBoxesKeepsItsLightAndAgreesWithUniformPatches) {
+    const Scene scene = make_builtin_scene("white-room");
+    auto solve = [&](Subdivision subdivision, double patch_scale, EnergyBalance& balance) {
+        const PatchMesh base = build_patches(scene, MeshingOptions{patch_scale * default_patch_size(scene)});
+        TransportSettings settings;
+        settings.subdivision = subdivision;
+        const SceneTransport built = build_scene_transport(scene, base, settings);
+        SolverOptions options;
+        options.tolerance = 1e-6;
+        auto solver = make_solver(SolverMethod::jacobi, *built.transport, options);
+        EXPECT_TRUE(run_to_end(*solver).converged()) << solver->status_message();
+        balance = energy_balance(*built.transport, solver->solution());
+        std::map<std::uint32_t, std::pair<double, double>> by_surface;  // Σ A B, Σ A
+        for (std::size_t i = 0; i < built.patches->size(); ++i) {
+            auto& [power, area] = by_surface[built.patches->patches[i].surface];
+            power += built.transport->area[i] * solver->solution()[i].x;
+            area += built.transport->area[i];
+        }
+        std::map<std::uint32_t, double> mean;
+        for (const auto& [surface, sums] : by_surface) mean[surface] = sums.first / sums.second;
+        return mean;
+    };
+    EnergyBalance clustered_balance, uniform_balance;
+    const auto clustered = solve(Subdivision::clustered, 4.0, clustered_balance);
+    const auto uniform = solve(Subdivision::uniform, 1.0, uniform_balance);
+    const auto total = [](const glm::dvec3& v) { return v.x + v.y + v.z; };
+    const double emitted = total(clustered_balance.emitted);
+    EXPECT_NEAR((total(clustered_balance.absorbed) + total(clustered_balance.escaped)) / emitted, 1.0, 5e-3);
+    EXPECT_LT(total(clustered_balance.escaped), 3e-3 * emitted);
+    for (const auto& [surface, b] : uniform) {
+        std::printf("[ figures ] %s: clustered %.4f, uniform %.4f\n", scene.surfaces[surface].name.c_str(),
+                    clustered.at(surface), b);
+        EXPECT_NEAR(clustered.at(surface), b, 0.015 * b) << scene.surfaces[surface].name;
+    }
 }
 
 }  // namespace

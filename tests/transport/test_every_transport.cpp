@@ -110,15 +110,16 @@ TEST_P(EveryTransport, FurnaceGivesEOverOneMinusRhoOnEveryElement) {
 // The Cornell box is open at the front: light escapes, and what is emitted is absorbed or escapes, to
 // within the transport's reciprocity error (A_i F_ij = A_j F_ji holds only approximately for estimated
 // form factors; the balance uses it): within 0.5 % for form factors on half the default mesh's patch size.
-// The hierarchies (base patches 4 times the default size, as the program makes them) are held where they
-// stand today (docs/subdivision.md): hierarchical radiosity loses 5 % here, clustering gains 8.5 %; the
-// bounds catch a regression until their accounting is redone.
+// Clustering balances its leaves' rows and columns (both equal to each leaf's reach), so it holds the same
+// 0.5 %. Hierarchical radiosity (base patches 4 times the default size, as the program makes them) is held
+// where it stands today (docs/subdivision.md): it loses 5 % here; the bound catches a regression until its
+// accounting is redone.
 double energy_tolerance(Subdivision subdivision) {
     switch (subdivision) {
         case Subdivision::hierarchical:
             return 0.06;
         case Subdivision::clustered:
-            return 0.10;
+        case Subdivision::automatic:
         case Subdivision::uniform:
         case Subdivision::adaptive:
             break;
@@ -157,6 +158,14 @@ TEST_P(EveryTransport, JacobiStepsAreBounces) {
     }
 }
 
+// Every transport the program builds: `automatic` is one of them, chosen by the scene's size.
+std::vector<Subdivision> transports() {
+    std::vector<Subdivision> out;
+    for (Subdivision s : all_subdivisions())
+        if (s != Subdivision::automatic) out.push_back(s);
+    return out;
+}
+
 std::string pair_name(const ::testing::TestParamInfo<Pair>& info) {
     std::string name = std::string(subdivision_name(std::get<0>(info.param))) + "_" +
                        std::string(solver_method_name(std::get<1>(info.param)));
@@ -166,13 +175,13 @@ std::string pair_name(const ::testing::TestParamInfo<Pair>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Pairs, EveryTransport,
-                         ::testing::Combine(::testing::ValuesIn(all_subdivisions()),
+                         ::testing::Combine(::testing::ValuesIn(transports()),
                                             ::testing::ValuesIn(all_solver_methods())),
                          pair_name);
 
 // The report is the same kind of record for every transport, and its interactions are what gather reads.
 TEST(EveryTransportReport, NamesItsKindAndCountsItsInteractions) {
-    for (Subdivision s : all_subdivisions()) {
+    for (Subdivision s : transports()) {
         const Built built = build(make_builtin_scene("cornell"), s, 4.0);
         const TransportReport report = built.transport.transport->report();
         EXPECT_EQ(report.kind, subdivision_name(s));

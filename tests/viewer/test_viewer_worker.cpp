@@ -1,12 +1,15 @@
 // The viewer's background worker, without a window: it takes the steps asked for, keeps each bounce
 // alone (paths L D^k E), runs to convergence, switches smooth and flat colours, resets to the emission
-// without recomputing form factors, and cancels long work promptly.
+// without recomputing form factors, cancels long work promptly, and opens saved solutions (FILE.radiosity)
+// through the same request as scenes.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <thread>
 
 #include "pipeline/radiosity_pipeline.hpp"
+#include "rad/io/saved_solution.hpp"
+#include "test_support.hpp"
 #include "viewer/solver_worker.hpp"
 
 namespace rad {
@@ -158,8 +161,11 @@ TEST(ViewerWorker, FlatColoursChangeTheGeometryButNotTheSolution) {
 }
 
 TEST(ViewerWorker, CancelStopsTheFormFactorsPromptly) {
-    // Fine enough that the form factors take many seconds (minutes under sanitizers).
-    SolverWorker worker(cornell(12.0));
+    // Fine enough that the form factors take many seconds (minutes under sanitizers); uniform, which
+    // --subdivision auto would not pick for so many patches.
+    PipelineOptions options = cornell(12.0);
+    options.subdivision.method = "uniform";
+    SolverWorker worker(options);
     const auto give_up = Clock::now() + std::chrono::seconds(120);
     while (!(worker.progress() && worker.progress()->stage() == "form factors") && Clock::now() < give_up) {
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -185,6 +191,192 @@ TEST(ViewerWorker, ABadSceneIsReportedAsBadInput) {
     const SolverSnapshot snapshot = worker.snapshot();
     EXPECT_TRUE(snapshot.bad_input);
     EXPECT_NE(snapshot.error.find("/nonexistent/scene.obj"), std::string::npos) << snapshot.error;
+}
+
+// A Cornell box solved by 3 Jacobi steps, far from converged, so that stepping can continue.
+PipelineOptions unfinished_cornell() {
+    PipelineOptions options = cornell(100.0);
+    options.solver.method = "jacobi";
+    options.solver.tolerance = 1e-12;
+    return options;
+}
+
+constexpr std::size_t kSavedSteps = 3;
+
+SavedSolution solved(const PipelineOptions& options) {
+    RadiosityPipeline pipeline(options);
+    pipeline.prepare();
+    for (std::size_t i = 0; i < kSavedSteps; ++i) pipeline.step();
+    return pipeline.saved_solution();
+}
+
+std::string write_saved(const test::TempDir& dir, const std::string& name, const SavedSolution& saved) {
+    const std::string path = (dir.path() / name).string();
+    write_saved_solution(path, saved);
+    return path;
+}
+
+PipelineOptions opening(PipelineOptions options, const std::string& path) {
+    options.scene.scene = path;
+    return options;
+}
+
+// The panel's Open (and a dropped file) sends the scene field through request_rebuild: a saved solution is
+// shown as saved, its transport rebuilt once behind it, and stepping continues from it.
+TEST(ViewerWorker, OpensASavedSolutionAndContinuesSteppingFromIt) {
+    const PipelineOptions options = unfinished_cornell();
+    test::TempDir dir;
+    const std::string path = write_saved(dir, "cornell.radiosity", solved(options));
+    PipelineOptions cube = cornell(0.0);
+    cube.scene.scene = "builtin:cube";
+    SolverWorker worker(cube);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+
+    worker.request_rebuild(opening(cube, path));
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    SolverSnapshot snapshot = worker.snapshot();
+    ASSERT_TRUE(snapshot.error.empty()) << snapshot.error;
+    ASSERT_TRUE(snapshot.geometry && snapshot.radiance);
+    EXPECT_EQ(snapshot.statistics.scene, path);
+    EXPECT_EQ(snapshot.statistics.patches, RadiosityPipeline(options).patches().size());
+    EXPECT_EQ(snapshot.radiance->step, kSavedSteps);  // the saved count, not 0 from a fresh solver
+    expect_near(snapshot.radiance->cumulative, radiance_after(options, kSavedSteps));
+    EXPECT_TRUE(snapshot.statistics.prepared);
+    EXPECT_EQ(snapshot.statistics.form_factor_passes, 1u);
+    // What the panel's controls take and "Re-mesh and recompute" starts from: the saved scene and settings.
+    ASSERT_TRUE(snapshot.statistics.saved_options);
+    const PipelineOptions& saved = *snapshot.statistics.saved_options;
+    EXPECT_EQ(saved.scene.scene, "builtin:cornell");
+    EXPECT_EQ(saved.scene.patch_size, 100.0);
+    EXPECT_EQ(saved.subdivision.method, "uniform");
+    EXPECT_EQ(saved.solver.method, "jacobi");
+    EXPECT_EQ(saved.solver.tolerance, 1e-12);
+    EXPECT_TRUE(snapshot.statistics.remesh_unavailable.empty()) << snapshot.statistics.remesh_unavailable;
+    const std::uint64_t version = snapshot.geometry->scene_version;
+
+    worker.request_steps(1);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    snapshot = worker.snapshot();
+    ASSERT_TRUE(snapshot.radiance);
+    EXPECT_EQ(snapshot.radiance->step, kSavedSteps + 1);
+    expect_near(snapshot.radiance->cumulative, radiance_after(options, kSavedSteps + 1));
+    ASSERT_TRUE(snapshot.radiance->bounce(kSavedSteps + 1));
+    EXPECT_EQ(snapshot.statistics.form_factor_passes, 1u);
+
+    // Re-mesh: the saved scene solved again from the emission, in the same view (the same scene).
+    worker.request_rebuild(saved);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    snapshot = worker.snapshot();
+    ASSERT_TRUE(snapshot.error.empty()) << snapshot.error;
+    ASSERT_TRUE(snapshot.geometry && snapshot.radiance);
+    EXPECT_EQ(snapshot.statistics.scene, "builtin:cornell");
+    EXPECT_FALSE(snapshot.statistics.saved_options);
+    EXPECT_EQ(snapshot.radiance->step, 0u);
+    expect_near(snapshot.radiance->cumulative, radiance_after(options, 0));
+    EXPECT_EQ(snapshot.geometry->scene_version, version);
+}
+
+// The saved radiosity is on screen before any form factor is computed. Its settings here name a fine mesh,
+// so rebuilding the transport takes long enough to look while it runs (and ends in an error: the rebuilt
+// elements are not the saved ones).
+TEST(ViewerWorker, ShowsASavedSolutionBeforeAnyFormFactorPass) {
+    const PipelineOptions options = unfinished_cornell();
+    SavedSolution saved = solved(options);
+    saved.settings.patch_size = 12.0;
+    test::TempDir dir;
+    SolverWorker worker(opening(options, write_saved(dir, "slow.radiosity", saved)));
+    const auto give_up = Clock::now() + std::chrono::seconds(120);
+    while (!(worker.progress() && worker.progress()->stage() == "form factors") && Clock::now() < give_up) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ASSERT_TRUE(worker.progress() && worker.progress()->stage() == "form factors");
+    SolverSnapshot snapshot = worker.snapshot();
+    ASSERT_TRUE(snapshot.geometry && snapshot.radiance);
+    EXPECT_EQ(snapshot.radiance->step, kSavedSteps);
+    expect_near(snapshot.radiance->cumulative, radiance_after(options, kSavedSteps));
+    EXPECT_FALSE(snapshot.statistics.prepared);
+    EXPECT_EQ(snapshot.statistics.form_factor_passes, 0u);
+    EXPECT_EQ(snapshot.statistics.patches, saved.size());
+
+    worker.cancel();
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(30)));
+    snapshot = worker.snapshot();
+    EXPECT_NE(snapshot.error.find("cancelled"), std::string::npos) << snapshot.error;
+    ASSERT_TRUE(snapshot.radiance);  // still the saved solution
+    EXPECT_EQ(snapshot.radiance->step, kSavedSteps);
+}
+
+// Its transport rebuilt with other elements (a file from another version, say): the error is shown beside
+// the saved solution, which stays, and nothing reads the solver that was never made.
+TEST(ViewerWorker, ASavedSolutionWhoseTransportDiffersStaysShownWithTheError) {
+    const PipelineOptions options = unfinished_cornell();
+    SavedSolution saved = solved(options);
+    saved.settings.patch_size = 90.0;  // 7 patches an edge, not 6
+    test::TempDir dir;
+    SolverWorker worker(opening(options, write_saved(dir, "other.radiosity", saved)));
+    worker.request_steps(1);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot snapshot = worker.snapshot();
+    EXPECT_NE(snapshot.error.find("elements, not the saved"), std::string::npos) << snapshot.error;
+    EXPECT_TRUE(snapshot.bad_input);
+    EXPECT_FALSE(snapshot.statistics.prepared);
+    ASSERT_TRUE(snapshot.radiance);
+    EXPECT_EQ(snapshot.radiance->step, kSavedSteps);  // the step asked for was not taken
+    expect_near(snapshot.radiance->cumulative, radiance_after(options, kSavedSteps));
+}
+
+// The saved file holds its scene, so it opens and steps; but re-meshing loads the scene file, which is gone.
+TEST(ViewerWorker, ASavedSolutionWhoseSceneFileIsGoneCannotBeRemeshed) {
+    const PipelineOptions options = unfinished_cornell();
+    SavedSolution saved = solved(options);
+    test::TempDir dir;
+    const std::string moved = (dir.path() / "moved.obj").string();
+    saved.settings.scene_source = moved;
+    SolverWorker worker(opening(options, write_saved(dir, "moved.radiosity", saved)));
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot snapshot = worker.snapshot();
+    ASSERT_TRUE(snapshot.error.empty()) << snapshot.error;
+    EXPECT_TRUE(snapshot.statistics.prepared);
+    ASSERT_TRUE(snapshot.statistics.saved_options);
+    EXPECT_EQ(snapshot.statistics.saved_options->scene.scene, moved);
+    EXPECT_NE(snapshot.statistics.remesh_unavailable.find(moved), std::string::npos)
+        << snapshot.statistics.remesh_unavailable;
+}
+
+// A damaged or foreign .radiosity file opened over a scene: the one-line error, and the scene as it was,
+// still stepping.
+TEST(ViewerWorker, ABadSavedSolutionLeavesThePreviousSceneShown) {
+    const PipelineOptions options = unfinished_cornell();
+    test::TempDir dir;
+    std::string damaged = encode_saved_solution(solved(options));
+    damaged[kSavedSolutionHeaderBytes + damaged.size() / 2] ^= 0x40;  // the checksum no longer matches
+    const std::vector<std::string> paths = {dir.write("damaged.radiosity", damaged),
+                                            dir.write("foreign.radiosity", "solid cube\nendsolid\n"),
+                                            (dir.path() / "missing.radiosity").string()};
+    SolverWorker worker(options);
+    worker.request_steps(2);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot before = worker.snapshot();
+    ASSERT_TRUE(before.error.empty() && before.geometry && before.radiance) << before.error;
+
+    for (const std::string& path : paths) {
+        worker.request_rebuild(opening(options, path));
+        ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(30)));
+        const SolverSnapshot after = worker.snapshot();
+        EXPECT_TRUE(after.bad_input) << path;
+        EXPECT_NE(after.error.find(path), std::string::npos) << after.error;
+        EXPECT_EQ(after.error.find('\n'), std::string::npos) << after.error;
+        EXPECT_EQ(after.geometry, before.geometry) << path;
+        EXPECT_EQ(after.radiance, before.radiance) << path;
+        EXPECT_EQ(after.statistics.scene, "builtin:cornell");
+        EXPECT_FALSE(after.statistics.saved_options);
+    }
+    worker.request_steps(1);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot stepped = worker.snapshot();
+    ASSERT_TRUE(stepped.radiance);
+    EXPECT_EQ(stepped.radiance->step, 3u);
+    expect_near(stepped.radiance->cumulative, radiance_after(options, 3));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <initializer_list>
 #include <numbers>
 
+#include "furnace_name.hpp"
 #include "rad/scene/polygon_soup.hpp"
 #include "rad/util/error.hpp"
 
@@ -128,6 +129,10 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
         {"parallel",
          "two unit squares facing each other at distance 1; the lower emits E = 1, reflectance 0.5"},
         {"perpendicular", "two unit squares sharing an edge at a right angle; the floor emits E = 1"},
+        {"furnace",
+         "a closed unit room of tessellated balls, about 10 k faces (furnace-N for N faces, 1k to 10m: "
+         "furnace-100k, furnace-1m), every face with reflectance 0.5 and E = 1: a furnace, B = E / (1 - "
+         "reflectance) = 2 on every face"},
     };
     return scenes;
 }
@@ -138,9 +143,15 @@ Scene make_builtin_scene(const std::string& name) {
     if (name == "cube") return make_cube();
     if (name == "parallel") return make_parallel_squares();
     if (name == "perpendicular") return make_perpendicular_squares();
+    if (name == "furnace") return make_furnace(kFurnaceDefaultFaces);
+    if (name.starts_with("furnace-")) {
+        Scene scene = make_furnace(furnace_faces(name));
+        scene.source = "builtin:" + name;  // as it was asked for: furnace-100k, not furnace-100000
+        return scene;
+    }
     std::string known;
     for (const auto& s : builtin_scenes()) known += (known.empty() ? "" : ", ") + s.name;
-    throw InputError("builtin:" + name + ": no such built-in scene (available: " + known + ")");
+    throw InputError("builtin:" + name + ": no such built-in scene (available: " + known + ", furnace-N)");
 }
 
 Scene make_cornell_box() {

@@ -72,6 +72,8 @@ SceneTransport clustered(const Scene& scene, const PatchMesh& base, const Transp
 
 std::string_view subdivision_name(Subdivision subdivision) {
     switch (subdivision) {
+        case Subdivision::automatic:
+            return "auto";
         case Subdivision::uniform:
             return "uniform";
         case Subdivision::adaptive:
@@ -85,9 +87,15 @@ std::string_view subdivision_name(Subdivision subdivision) {
 }
 
 const std::vector<Subdivision>& all_subdivisions() {
-    static const std::vector<Subdivision> all = {Subdivision::uniform, Subdivision::adaptive,
-                                                 Subdivision::hierarchical, Subdivision::clustered};
+    static const std::vector<Subdivision> all = {Subdivision::automatic, Subdivision::uniform,
+                                                 Subdivision::adaptive, Subdivision::hierarchical,
+                                                 Subdivision::clustered};
     return all;
+}
+
+Subdivision choose_subdivision(Subdivision requested, std::size_t uniform_patches) {
+    if (requested != Subdivision::automatic) return requested;
+    return uniform_patches <= kAutomaticUniformPatches ? Subdivision::uniform : Subdivision::clustered;
 }
 
 bool has_matrix(Subdivision subdivision) {
@@ -96,13 +104,14 @@ bool has_matrix(Subdivision subdivision) {
 
 SceneTransport build_scene_transport(const Scene& scene, const PatchMesh& base,
                                      const TransportSettings& settings, Progress* progress) {
-    switch (settings.subdivision) {
+    switch (choose_subdivision(settings.subdivision, base.size())) {
         case Subdivision::adaptive:
             return adaptive(scene, base, settings, progress);
         case Subdivision::hierarchical:
             return hierarchical(scene, base, settings, progress);
         case Subdivision::clustered:
             return clustered(scene, base, settings, progress);
+        case Subdivision::automatic:
         case Subdivision::uniform:
             break;
     }

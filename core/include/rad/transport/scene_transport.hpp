@@ -23,17 +23,28 @@ namespace rad {
 //   hierarchical  coarse base patches split into a quadtree as links between elements need it (Hanrahan,
 //                 Salzman and Aupperle 1991);
 //   clustered     hierarchical radiosity with volume clusters over the base patches above their quadtrees,
-//                 refined from the root cluster's link to itself (Smits, Arvo and Greenberg 1994).
-enum class Subdivision { uniform, adaptive, hierarchical, clustered };
+//                 refined from the root cluster's link to itself (Smits, Arvo and Greenberg 1994);
+//   automatic     uniform patches for a scene of few patches, clustering beyond (choose_subdivision).
+enum class Subdivision { automatic, uniform, adaptive, hierarchical, clustered };
 
-std::string_view subdivision_name(Subdivision subdivision);  // "uniform", "adaptive", "hierarchical"
-const std::vector<Subdivision>& all_subdivisions();
+// "auto", "uniform", "adaptive", "hierarchical", "clustered".
+std::string_view subdivision_name(Subdivision subdivision);
+const std::vector<Subdivision>& all_subdivisions();  // automatic first
 
-// Whether that subdivision's transport has a form-factor matrix (see check_solver_supported).
+// Uniform patches up to this many at their default size, clustering beyond: below it uniform patches
+// reach a given error sooner, above it clustering does (docs/measurements.md, "Scaling").
+inline constexpr std::size_t kAutomaticUniformPatches = 10'000;
+
+// What `automatic` means for a scene whose uniform mesh has `uniform_patches` patches; any other
+// subdivision is itself.
+Subdivision choose_subdivision(Subdivision requested, std::size_t uniform_patches);
+
+// Whether that subdivision's transport has a form-factor matrix (see check_solver_supported); automatic
+// must be chosen first (false).
 bool has_matrix(Subdivision subdivision);
 
 struct TransportSettings {
-    Subdivision subdivision = Subdivision::uniform;
+    Subdivision subdivision = Subdivision::automatic;
     FormFactorOptions form_factors;                   // uniform and adaptive
     AdaptiveOptions adaptive;                         // adaptive
     HierarchicalOptions hierarchical;                 // hierarchical
@@ -50,7 +61,8 @@ struct SceneTransport {
     std::unique_ptr<const PatchMesh> refined_patches;
 };
 
-// The one place that knows the kinds of transport. `base` must outlive the result. Throws what the builders
+// The one place that knows the kinds of transport. `base` must outlive the result; for `automatic` it is
+// taken as the uniform mesh (choose_subdivision of its size). Throws what the builders
 // throw (InputError for bad settings or a pass over the memory budget) and Cancelled when `progress` is
 // cancelled.
 SceneTransport build_scene_transport(const Scene& scene, const PatchMesh& base,

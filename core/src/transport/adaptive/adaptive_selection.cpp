@@ -32,7 +32,7 @@ void keep_most_important(const ElementTree& tree, std::span<const std::uint32_t>
 }  // namespace
 
 SplitChoice choose_splits(const ElementTree& tree, std::span<const std::uint32_t> elements,
-                          const SplitRequests& requests, double min_patch_size, std::size_t max_patches) {
+                          const SplitRequests& requests, double min_patch_size, std::size_t max_leaves) {
     SplitChoice choice;
     for (std::uint32_t i = 0; i < elements.size(); ++i) {
         const bool gradient = requests.gradient[i] >= 1.0, shadow = requests.shadow[i] >= 1.0;
@@ -45,7 +45,7 @@ SplitChoice choose_splits(const ElementTree& tree, std::span<const std::uint32_t
             ++choice.too_small;
         }
     }
-    const std::size_t room = max_patches > tree.leaf_count() ? (max_patches - tree.leaf_count()) / 3 : 0;
+    const std::size_t room = max_leaves > tree.leaf_count() ? (max_leaves - tree.leaf_count()) / 3 : 0;
     if (choice.leaves.size() > room) {
         choice.over_budget = true;
         keep_most_important(tree, elements, requests, room, choice.leaves);

@@ -1,6 +1,8 @@
 #include "rad/transport/adaptive/adaptive_subdivision.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -11,21 +13,24 @@
 #include "transport/adaptive/adaptive_selection.hpp"
 #include "transport/adaptive/adaptive_shadow.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
+#include "transport/uniform/form_factors_memory.hpp"
 
 namespace rad {
 
 namespace {
 
-void check_options(const PatchMesh& base, const AdaptiveOptions& options) {
+// The rays per row compute_form_factors takes for `ff` (a negative count is its to refuse).
+int pass_rays(const FormFactorOptions& ff) {
+    if (ff.rays > 0) return ff.rays;
+    return ff.method == FormFactorMethod::hemisphere ? kDefaultHemisphereRays : kDefaultAnalyticRays;
+}
+
+void check_options(const AdaptiveOptions& options) {
     if (!(options.min_patch_size >= 0.0) || !std::isfinite(options.min_patch_size))
         throw InputError("adaptive subdivision: the minimum patch size must be finite and at least 0");
     if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
         throw InputError("adaptive subdivision: the tolerance must be finite and above 0");
     if (options.max_passes < 1) throw InputError("adaptive subdivision: at least one pass is needed");
-    if (options.max_patches < base.size()) {
-        throw InputError("adaptive subdivision: the patch limit (" + std::to_string(options.max_patches) +
-                         ") is below the base mesh's " + std::to_string(base.size()) + " patches");
-    }
 }
 
 struct PassSolution {
@@ -72,8 +77,8 @@ int noise_rays_of(const FormFactorOptions& ff) {
 }
 
 SplitChoice choose_pass_splits(const SolvedLeaves& leaves, const ShadowRays& rays, int noise_rays,
-                               const AdaptiveOptions& options, int number, AdaptivePass& pass,
-                               AdaptiveReport& report, Progress* progress) {
+                               const AdaptiveOptions& options, std::size_t max_leaves, int number,
+                               AdaptivePass& pass, AdaptiveReport& report, Progress* progress) {
     const Stopwatch clock;
     const std::vector<double> gradient =
         gradient_excess(leaves, options.tolerance, radiosity_noise(leaves, noise_rays));
@@ -83,7 +88,7 @@ SplitChoice choose_pass_splits(const SolvedLeaves& leaves, const ShadowRays& ray
     const std::vector<double> shadow = shadow_excess(leaves, sources, rays, progress);
     if (progress && progress->cancelled()) throw Cancelled{};
     SplitChoice choice = choose_splits(leaves.tree, leaves.elements, SplitRequests{gradient, shadow},
-                                       options.min_patch_size, options.max_patches);
+                                       options.min_patch_size, max_leaves);
     pass.gradient_leaves = choice.gradient;
     pass.shadow_leaves = choice.shadow;
     pass.too_small = choice.too_small;
@@ -100,18 +105,29 @@ std::string_view adaptive_stop_name(AdaptiveStop stop) {
             return "nothing to split";
         case AdaptiveStop::max_passes:
             return "max passes";
-        case AdaptiveStop::max_patches:
-            return "max patches";
+        case AdaptiveStop::memory_budget:
+            return "memory budget";
     }
     return "unknown";
+}
+
+std::size_t adaptive_leaves_that_fit(const FormFactorOptions& ff) {
+    // Leaves are 32-bit indices of the form factors' columns, with the top values reserved.
+    constexpr std::size_t kMostLeaves = std::numeric_limits<std::uint32_t>::max() - 3;
+    const std::size_t budget = memory_budget_bytes(ff.max_memory_bytes);
+    if (budget == 0) return kMostLeaves;  // the machine would not say: no budget, as for uniform patches
+    return form_factor_patches_that_fit(budget, ff.method, pass_rays(ff), kMostLeaves);
 }
 
 AdaptiveResult subdivide_adaptively(const Scene& scene, const PatchMesh& base, const FormFactorOptions& ff,
                                     SolverMethod method, const SolverOptions& solver,
                                     const AdaptiveOptions& options, Progress* progress) {
     const Stopwatch clock;
-    check_options(base, options);
+    check_options(options);
     check_solver_options(solver);  // before the first pass's form factors, not after
+    // The first pass is the base mesh's: refused now, with a patch size that fits, if it cannot be made.
+    if (ff.rays >= 0) check_memory_budget(base, ff, pass_rays(ff));
+    const std::size_t max_leaves = adaptive_leaves_that_fit(ff);
     ElementTree tree(base);
     const RayScene ray_scene(base);  // the leaves cover the base patches exactly: the same geometry
     const ShadowRays rays{base, ray_scene, ray_offset(base), options.seed};
@@ -125,22 +141,22 @@ AdaptiveResult subdivide_adaptively(const Scene& scene, const PatchMesh& base, c
             progress->begin("adaptive pass " + std::to_string(number) + " of at most " +
                                 std::to_string(options.max_passes),
                             0);
-            progress->note(std::to_string(mesh.size()) + " patches (at most " +
-                           std::to_string(options.max_patches) + "): form factors, then a solve");
+            progress->note(std::to_string(mesh.size()) + " patches (at most " + std::to_string(max_leaves) +
+                           " within the memory budget): form factors, then a solve");
         }
         PassSolution solved = solve_pass(scene, mesh, ff, method, solver, number, pass, progress);
         std::optional<AdaptiveStop> stop;
         SplitChoice choice;
         if (budget_spent) {
-            stop = AdaptiveStop::max_patches;
+            stop = AdaptiveStop::memory_budget;
         } else if (number >= options.max_passes) {
             stop = AdaptiveStop::max_passes;
         } else {
             const SolvedLeaves solved_leaves{tree, leaves, mesh, solved.system, solved.radiosity};
-            choice = choose_pass_splits(solved_leaves, rays, noise_rays_of(ff), options, number, pass, report,
-                                        progress);
+            choice = choose_pass_splits(solved_leaves, rays, noise_rays_of(ff), options, max_leaves, number,
+                                        pass, report, progress);
             if (choice.leaves.empty())
-                stop = choice.over_budget ? AdaptiveStop::max_patches : AdaptiveStop::nothing_to_split;
+                stop = choice.over_budget ? AdaptiveStop::memory_budget : AdaptiveStop::nothing_to_split;
         }
         if (stop) {
             report.stop = *stop;

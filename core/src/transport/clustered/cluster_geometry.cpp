@@ -82,17 +82,38 @@ double link_factor(const NodeShape& receiver, const NodeShape& source, bool boun
     return source.area * c_r * c_s / (std::numbers::pi * gap * gap + source.area);
 }
 
+double element_factor(const ElementTree& tree, std::uint32_t receiver, std::uint32_t source) {
+    const ConvexPolygon to = element_polygon(tree, source), at = element_polygon(tree, receiver);
+    const glm::dvec3 n = tree[receiver].shape.normal;
+    // Four points of a 2 × 2 grid over the receiver: a near source's factor varies across it.
+    constexpr double kGrid[2] = {0.25, 0.75};
+    double sum = 0.0;
+    for (const double u : kGrid)
+        for (const double v : kGrid) {
+            const glm::dvec3 x = point_on_convex_polygon(at.span(), glm::dvec2(u, v));
+            const ConvexPolygon front = clip_to_front(to, x, n);
+            if (!front.empty()) sum += std::max(0.0, point_polygon_factor(x, n, front.span()));
+        }
+    return sum / 4.0;
+}
+
 void sample_node(const ClusterHierarchy& h, std::span<const double> patch_area_prefix, std::uint32_t node,
-                 RandomStream& random, glm::dvec3& point, glm::dvec3& normal) {
+                 const glm::dvec3& towards, RandomStream& random, glm::dvec3& point, glm::dvec3& normal) {
     std::uint32_t element = ClusterNode::index(node);
     if (ClusterNode::is_cluster(node)) {
+        // A base patch by its area, kept with probability its cosine towards the other node (rejection):
+        // the surfaces facing away send nothing there, and rays from them would meet the cluster itself.
+        constexpr int kTries = 32;
         const ClusterHierarchy::Cluster& c = h.clusters[element];
         const double low = patch_area_prefix[c.patch_begin], high = patch_area_prefix[c.patch_end];
-        const double pick = low + random.uniform() * (high - low);
-        const auto it = std::upper_bound(patch_area_prefix.begin() + c.patch_begin + 1,
-                                         patch_area_prefix.begin() + c.patch_end, pick);
-        const auto slot = static_cast<std::size_t>(it - patch_area_prefix.begin()) - 1;
-        element = h.patch_order[std::min<std::size_t>(slot, c.patch_end - 1)];
+        for (int attempt = 0; attempt < kTries; ++attempt) {
+            const double pick = low + random.uniform() * (high - low);
+            const auto it = std::upper_bound(patch_area_prefix.begin() + c.patch_begin + 1,
+                                             patch_area_prefix.begin() + c.patch_end, pick);
+            const auto slot = static_cast<std::size_t>(it - patch_area_prefix.begin()) - 1;
+            element = h.patch_order[std::min<std::size_t>(slot, c.patch_end - 1)];
+            if (random.uniform() < glm::dot(h.tree[element].shape.normal, towards)) break;
+        }
     }
     const ConvexPolygon polygon = element_polygon(h.tree, element);
     point = point_on_convex_polygon(polygon.span(), glm::dvec2(random.uniform(), random.uniform()));

@@ -40,13 +40,19 @@ double link_factor(const NodeShape& receiver, const NodeShape& source, bool boun
 // without its own share, which its surfaces apply each by its cosine.
 double transfer_factor(const NodeShape& receiver, const NodeShape& source);
 
+// The form factor from element `receiver` to element `source`, unoccluded: the point-to-polygon factor
+// (exact for a point) averaged over four points of the receiver. Accurate where the disk approximation is
+// not: near and adjacent elements, which a row of the leaves' gather is mostly made of.
+double element_factor(const ElementTree& tree, std::uint32_t receiver, std::uint32_t source);
+
 // The cosine of a surface of normal n towards d as the clusters' six-direction summary reads it:
 // Σ_axis |d_axis| max(0, sign(d_axis) n_axis). Summed over a cluster's surfaces it is projected_area.
 double summary_cosine(const glm::dvec3& n, const glm::dvec3& d);
 
-// A point on the node's surfaces, area-uniform (for a cluster: a base patch chosen by area, then a point
-// on it), and that surface's normal.
+// A point on the node's surfaces and that surface's normal: for an element, area-uniform; for a cluster, on
+// its surfaces by their projected area towards the unit direction `towards` (a base patch so chosen, then
+// an area-uniform point on it).
 void sample_node(const ClusterHierarchy& h, std::span<const double> patch_area_prefix, std::uint32_t node,
-                 RandomStream& random, glm::dvec3& point, glm::dvec3& normal);
+                 const glm::dvec3& towards, RandomStream& random, glm::dvec3& point, glm::dvec3& normal);
 
 }  // namespace rad

@@ -19,9 +19,10 @@ double max_channel(const glm::dvec3& v) {
 class Refiner {
   public:
     Refiner(ClusterHierarchy& h, const RayScene& rays, double offset, const ClusteredOptions& options,
-            ClusteredReport& report)
-        : h_(h), rays_(rays), offset_(offset), options_(options), report_(report) {
+            ClusteredReport& report, const RadiosityEstimate* estimate)
+        : h_(h), rays_(rays), offset_(offset), options_(options), report_(report), estimate_(estimate) {
         prepare_estimates();
+        if (estimate_) epsilon_ = options_.tolerance * estimate_->mean;
     }
 
     void run(Progress* progress) {
@@ -75,7 +76,12 @@ class Refiner {
         return ClusterNode::is_cluster(node) ? cluster_rho_[i] : max_channel(h_.reflectance[i]);
     }
     double radiosity_estimate(std::uint32_t node) const {
-        const std::uint32_t i = ClusterNode::index(node);
+        std::uint32_t i = ClusterNode::index(node);
+        if (estimate_) {
+            if (ClusterNode::is_cluster(node)) return estimate_->cluster[i];
+            while (i >= estimate_->element.size()) i = h_.tree[i].parent;
+            return estimate_->element[i];
+        }
         return (ClusterNode::is_cluster(node) ? cluster_emission_[i] : luminance(h_.emission[i])) + ambient_;
     }
 
@@ -111,6 +117,21 @@ class Refiner {
         for (std::uint32_t k = 0; k < 4; ++k) out.push_back(first + k);
     }
 
+    // Two elements exchange light only if some corner of each lies strictly in front of the other's plane:
+    // not coplanar neighbours, nor the faces of a convex object. (Their bounds, with the cosines lifted for
+    // the elements' extent, would otherwise split them down to the smallest size.)
+    bool faces_each_other(std::uint32_t a, std::uint32_t b) const {
+        auto in_front = [&](std::uint32_t of, std::uint32_t seen) {
+            const Element& e = h_.tree[ClusterNode::index(of)];
+            const ConvexPolygon corners = element_polygon(h_.tree, ClusterNode::index(seen));
+            const double tiny = 1e-9 * std::sqrt(e.shape.area);
+            for (std::size_t k = 0; k < corners.count; ++k)
+                if (glm::dot(e.shape.normal, corners.corners[k] - e.shape.centroid) > tiny) return true;
+            return false;
+        };
+        return in_front(a, b) && in_front(b, a);
+    }
+
     // Planar elements see nothing behind their plane.
     static bool behind(const NodeShape& element, const NodeShape& other) {
         return !element.cluster && glm::dot(element.normal, other.centre - element.centre) <= -other.radius;
@@ -127,6 +148,7 @@ class Refiner {
         }
         const NodeShape receiver = node_shape(h_, r), source = node_shape(h_, s);
         if (behind(receiver, source) || behind(source, receiver)) return;
+        if (!receiver.cluster && !source.cluster && !faces_each_other(r, s)) return;
         const double bound = link_factor(receiver, source, true);
         if (!(bound > 0.0)) return;
         // A cluster's transfer holds only to what lies outside it.
@@ -136,7 +158,12 @@ class Refiner {
         const bool wanted = close || error > epsilon_;
         const bool budget = h_.links.size() < options_.max_links;
         if (wanted && budget) {
-            const bool split_receiver = receiver.radius >= source.radius ? can_split(r) : !can_split(s);
+            // Closeness alone splits a cluster, never an element: the faces of one convex object near each
+            // other would otherwise split each other down to the smallest size.
+            const bool split_receiver =
+                close && !(error > epsilon_)
+                    ? receiver.cluster && (!source.cluster || receiver.radius >= source.radius)
+                    : (receiver.radius >= source.radius ? can_split(r) : !can_split(s));
             if (split_receiver && can_split(r)) {
                 children(r, scratch_);
                 for (std::uint32_t c : scratch_) stack.emplace_back(c, s);
@@ -149,9 +176,13 @@ class Refiner {
             }
         }
         if (wanted && !budget) report_.limited = true;
-        const double factor = transfer_factor(receiver, source);
+        const double factor = receiver.cluster || source.cluster
+                                  ? transfer_factor(receiver, source)
+                                  : element_factor(h_.tree, ClusterNode::index(r), ClusterNode::index(s));
         if (!(factor > 0.0)) return;
-        const double visible = visibility(r, s);
+        const glm::dvec3 towards =
+            distance > 0.0 ? (source.centre - receiver.centre) / distance : glm::dvec3(0.0);
+        const double visible = visibility(r, s, towards);
         if (visible > 0.0) {
             const glm::dvec3 direction =
                 distance > 0.0 ? (source.centre - receiver.centre) / distance : glm::dvec3(0.0);
@@ -161,14 +192,14 @@ class Refiner {
     }
 
     // The share of shadow rays between random points of the two that nothing blocks.
-    double visibility(std::uint32_t r, std::uint32_t s) {
+    double visibility(std::uint32_t r, std::uint32_t s, const glm::dvec3& towards) {
         const int n = std::max(1, options_.visibility_rays);
         RandomStream random(options_.seed, r, s);
         rays_buffer_.clear();
         for (int k = 0; k < n; ++k) {
             glm::dvec3 from, from_normal, to, to_normal;
-            sample_node(h_, area_prefix_, r, random, from, from_normal);
-            sample_node(h_, area_prefix_, s, random, to, to_normal);
+            sample_node(h_, area_prefix_, r, towards, random, from, from_normal);
+            sample_node(h_, area_prefix_, s, -towards, random, to, to_normal);
             // Each end leaves its surface on the side that faces the other.
             from += offset_ * (glm::dot(from_normal, to - from) >= 0.0 ? from_normal : -from_normal);
             to += offset_ * (glm::dot(to_normal, from - to) >= 0.0 ? to_normal : -to_normal);
@@ -186,6 +217,7 @@ class Refiner {
     const double offset_;
     const ClusteredOptions& options_;
     ClusteredReport& report_;
+    const RadiosityEstimate* estimate_;
     std::vector<double> area_prefix_;
     std::vector<double> cluster_rho_, cluster_emission_;
     double ambient_ = 0.0, epsilon_ = 0.0;
@@ -197,8 +229,9 @@ class Refiner {
 }  // namespace
 
 void refine_cluster_links(ClusterHierarchy& h, const RayScene& rays, double ray_offset,
-                          const ClusteredOptions& options, ClusteredReport& report, Progress* progress) {
-    Refiner(h, rays, ray_offset, options, report).run(progress);
+                          const ClusteredOptions& options, ClusteredReport& report, Progress* progress,
+                          const RadiosityEstimate* estimate) {
+    Refiner(h, rays, ray_offset, options, report, estimate).run(progress);
 }
 
 }  // namespace rad

@@ -5,18 +5,29 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <string>
 
+#include "rad/util/stopwatch.hpp"
+#include "transport/hierarchical/hierarchical_first_links.hpp"
 #include "util/luminance.hpp"
 
 namespace rad {
 
+namespace {
+
+// The first links' time is told when it would be longer than this.
+constexpr double kLongSeconds = 600.0;
+
+}  // namespace
+
 LinkRefiner::LinkRefiner(HierarchicalSystem& system, const LinkEstimator& estimator,
-                         const HierarchicalOptions& options, double min_edge, HierarchicalReport& report,
-                         Progress* progress)
+                         const HierarchicalOptions& options, double min_edge, std::size_t memory_budget,
+                         HierarchicalReport& report, Progress* progress)
     : system_(system),
       estimator_(estimator),
       options_(options),
       min_edge_(min_edge),
+      memory_budget_(memory_budget),
       report_(report),
       progress_(progress),
       radiosity_(system.emission) {
@@ -53,9 +64,16 @@ bool LinkRefiner::wants_split(const HierarchicalLink& link) const {
     return kernel_error(link) > epsilon_ && (splittable(link.receiver) || splittable(link.source));
 }
 
-LinkRefiner::Decision LinkRefiner::decide(const HierarchicalLink& link) const {
+bool LinkRefiner::fits(std::size_t elements, std::uint64_t links) const {
+    return memory_budget_ == 0 || hierarchical_memory_estimate(elements, links) <= memory_budget_;
+}
+
+LinkRefiner::Decision LinkRefiner::decide(const HierarchicalLink& link, std::uint64_t held) const {
+    // Anything but accepting makes four candidates of this link, and a split four elements too.
+    const std::size_t elements = system_.tree.size();
+    if (!fits(elements, held + 4)) return Decision::accept;
     const glm::dvec3& rho = system_.reflectance[link.receiver];
-    const bool room = system_.tree.size() + 4 <= options_.max_elements;
+    const bool room = elements + 4 <= options_.max_elements && fits(elements + 4, held + 4);
     if (room && kernel_error(link) > epsilon_) {
         const bool receiver = splittable(link.receiver), source = splittable(link.source);
         const double receiver_area = system_.tree[link.receiver].shape.area;
@@ -100,7 +118,7 @@ void LinkRefiner::follow(const HierarchicalLink& link, Decision decision, std::v
     }
 }
 
-std::vector<LinkEstimate> LinkRefiner::estimate(const std::vector<LinkCandidate>& candidates, int draw) {
+std::vector<LinkEstimate> LinkRefiner::estimate(std::span<const LinkCandidate> candidates, int draw) {
     report_.rays += candidates.size() * static_cast<std::uint64_t>(options_.visibility_rays);
     std::vector<LinkEstimate> estimates(candidates.size());
     tbb::enumerable_thread_specific<LinkEstimator::Scratch> scratch;
@@ -135,45 +153,96 @@ const std::vector<float>& LinkRefiner::measure_reaching() {
     return reaching_;
 }
 
+void LinkRefiner::weigh(std::span<const LinkCandidate> candidates, std::span<const LinkEstimate> estimates,
+                        std::uint64_t pending, std::vector<LinkCandidate>& next,
+                        std::vector<LinkCandidate>& finished) {
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        if (!estimates[k].facing) continue;
+        if (!estimates[k].transports) {
+            finished.push_back(candidates[k]);  // no ray arrived; a fresh draw may see what they missed
+            continue;
+        }
+        HierarchicalLink link;
+        link.receiver = candidates[k].receiver;
+        link.source = candidates[k].source;
+        std::copy(std::begin(estimates[k].factor), std::end(estimates[k].factor), link.factor);
+        link.uncertainty = estimates[k].uncertainty;
+        const std::size_t made = system_.links.size() + next.size() + finished.size();
+        const bool full = made >= options_.max_links;
+        const Decision decision =
+            full ? Decision::accept : decide(link, made + pending + (candidates.size() - k - 1));
+        if (decision == Decision::accept && wants_split(link)) report_.limited = true;
+        if (decision == Decision::accept)
+            finished.push_back(candidates[k]);
+        else
+            follow(link, decision, next);
+    }
+}
+
 void LinkRefiner::refine(std::vector<LinkCandidate> candidates) {
     while (!candidates.empty()) {
         measure_exposed_share();
-        const std::vector<LinkEstimate> estimates = estimate(candidates, 0);
         std::vector<LinkCandidate> next, finished;
-        for (std::size_t k = 0; k < candidates.size(); ++k) {
-            if (!estimates[k].facing) continue;
-            if (!estimates[k].transports) {
-                finished.push_back(candidates[k]);  // no ray arrived; a fresh draw may see what they missed
-                continue;
-            }
-            HierarchicalLink link;
-            link.receiver = candidates[k].receiver;
-            link.source = candidates[k].source;
-            std::copy(std::begin(estimates[k].factor), std::end(estimates[k].factor), link.factor);
-            link.uncertainty = estimates[k].uncertainty;
-            const bool full = system_.links.size() + next.size() + finished.size() >= options_.max_links;
-            const Decision decision = full ? Decision::accept : decide(link);
-            if (decision == Decision::accept && wants_split(link)) report_.limited = true;
-            if (decision == Decision::accept)
-                finished.push_back(candidates[k]);
-            else
-                follow(link, decision, next);
-        }
+        weigh(candidates, estimate(candidates, 0), 0, next, finished);
         add_final_links(finished);
         candidates.swap(next);
     }
 }
 
+void LinkRefiner::refine_first(const PatchMesh& base, const FirstLinks& first, std::size_t block_pairs) {
+    const std::span<const std::uint32_t> counts = first.count;
+    const std::uint64_t total = first.total;
+    measure_exposed_share();
+    std::vector<LinkCandidate> block, next, finished;
+    finished.reserve(total);  // at most one each, and counted so by first_links_memory_estimate
+    std::uint64_t weighed = 0;
+    const Stopwatch clock;
+    const auto n = static_cast<std::uint32_t>(counts.size());
+    for (std::uint32_t begin = 0; begin < n;) {
+        std::uint32_t end = begin;
+        std::uint64_t pairs = 0;
+        while (end < n && (end == begin || pairs + counts[end] <= block_pairs)) pairs += counts[end++];
+        list_first_links(base, first, begin, end, block);
+        weighed += block.size();
+        weigh(block, estimate(block, 0), total - weighed, next, finished);
+        // A long first pass is told, not left to look like a hang: at the rate of its first block, twice
+        // over for the fresh draw of the links kept.
+        if (begin == 0 && progress_ && weighed < total) {
+            const double projected =
+                2.0 * clock.seconds() * static_cast<double>(total) / static_cast<double>(weighed);
+            if (projected > kLongSeconds)
+                progress_->note("the " + std::to_string(total) + " first links will take about " +
+                                format_duration(projected) + " at the rate of the first " +
+                                std::to_string(weighed));
+        }
+        begin = end;
+    }
+    block = {};
+    // What follows (the fresh draw, the links spawned) has no total known in advance.
+    if (progress_) progress_->begin("linking elements, round 1", 0);
+    // Room for the first links and no more (first_links_memory_estimate): growing by doubling would
+    // briefly hold them three times over.
+    system_.links.reserve(system_.links.size() + finished.size());
+    add_final_links(finished);
+    std::vector<LinkCandidate>().swap(finished);  // not held through the refinement that follows
+    refine(std::move(next));
+}
+
 void LinkRefiner::add_final_links(const std::vector<LinkCandidate>& finished) {
-    const std::vector<LinkEstimate> estimates = estimate(finished, 1);
-    for (std::size_t k = 0; k < finished.size(); ++k) {
-        if (!estimates[k].transports) continue;
-        HierarchicalLink link;
-        link.receiver = finished[k].receiver;
-        link.source = finished[k].source;
-        std::copy(std::begin(estimates[k].factor), std::end(estimates[k].factor), link.factor);
-        link.uncertainty = estimates[k].uncertainty;
-        system_.links.push_back(link);
+    // A block at a time, so that the estimates of the many first links never exist at once.
+    for (std::size_t begin = 0; begin < finished.size(); begin += kFirstLinkBlock) {
+        const std::span<const LinkCandidate> block =
+            std::span(finished).subspan(begin, std::min(kFirstLinkBlock, finished.size() - begin));
+        const std::vector<LinkEstimate> estimates = estimate(block, 1);
+        for (std::size_t k = 0; k < block.size(); ++k) {
+            if (!estimates[k].transports) continue;
+            HierarchicalLink link;
+            link.receiver = block[k].receiver;
+            link.source = block[k].source;
+            std::copy(std::begin(estimates[k].factor), std::end(estimates[k].factor), link.factor);
+            link.uncertainty = estimates[k].uncertainty;
+            system_.links.push_back(link);
+        }
     }
 }
 
@@ -181,7 +250,13 @@ bool LinkRefiner::refine_again() {
     std::vector<HierarchicalLink> links;
     links.swap(system_.links);
     std::vector<LinkCandidate> candidates;
-    for (const HierarchicalLink& link : links) follow(link, decide(link), candidates);
+    for (const HierarchicalLink& link : links) {
+        // The old links are all held until the pass ends, besides the new ones.
+        const Decision decision = decide(link, links.size() + system_.links.size() + candidates.size());
+        if (decision == Decision::accept && wants_split(link)) report_.limited = true;
+        follow(link, decision, candidates);
+    }
+    std::vector<HierarchicalLink>().swap(links);  // freed before the candidates are estimated
     const bool changed = !candidates.empty();
     refine(std::move(candidates));
     return changed;

@@ -9,8 +9,9 @@
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
 #include "ray/coverage.hpp"
-#include "transport/refinement_settings.hpp"
+#include "transport/hierarchical/hierarchical_first_links.hpp"
 #include "transport/hierarchical/hierarchical_refine.hpp"
+#include "transport/refinement_settings.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 #include "transport/uniform/form_factors_memory.hpp"
 #include "util/luminance.hpp"
@@ -19,42 +20,9 @@ namespace rad {
 
 namespace {
 
-// Every pair of base patches is a first link: beyond this many the n² pairs alone would not fit.
-constexpr std::size_t kMaxBasePatches = 20'000;
 // Jacobi steps between rounds: the oracle needs the radiosity roughly, not converged.
 constexpr int kRoundSteps = 64;
 constexpr double kRoundTolerance = 1e-3;
-
-void check_options(const HierarchicalOptions& o, std::size_t base_patches) {
-    check_refinement_settings(o.tolerance, o.min_patch_size, o.visibility_rays);
-    if (base_patches > kMaxBasePatches) {
-        throw SettingError("subdivision", "hierarchical links every pair of base patches, and " +
-                                              std::to_string(base_patches) + " base patches are more than " +
-                                              std::to_string(kMaxBasePatches) +
-                                              ": give a larger {patch_size}");
-    }
-}
-
-// Could the two see each other at all: some corner of each strictly in front of the other's plane?
-bool may_face(const PatchMesh& base, std::uint32_t a, std::uint32_t b) {
-    auto in_front = [&](std::uint32_t of, std::uint32_t seen) {
-        const Patch& p = base.patches[of];
-        const double tiny = 1e-9 * std::sqrt(p.area);
-        for (int k = 0; k < base.corner_count(seen); ++k)
-            if (glm::dot(p.normal, base.points[base.corners[seen][k]] - p.centroid) > tiny) return true;
-        return false;
-    };
-    return in_front(a, b) && in_front(b, a);
-}
-
-std::vector<LinkCandidate> first_candidates(const PatchMesh& base) {
-    std::vector<LinkCandidate> candidates;
-    const auto n = static_cast<std::uint32_t>(base.size());
-    for (std::uint32_t r = 0; r < n; ++r)
-        for (std::uint32_t s = 0; s < n; ++s)
-            if (r != s && may_face(base, r, s)) candidates.push_back({r, s});
-    return candidates;
-}
 
 void index_links(HierarchicalSystem& system) {
     std::sort(system.links.begin(), system.links.end(),
@@ -106,13 +74,17 @@ void finish_leaves(HierarchicalSystem& system) {
     system.leaf_patches = system.tree.leaf_mesh(system.leaves);
 }
 
-// "2516 base patches, up to 4 rounds of 16 rays per link, at most 60000000 links (1.34 GB)": the work and
-// its bound in memory, told before the links are built.
-std::string linking_note(const PatchMesh& base, const HierarchicalOptions& o) {
-    return std::to_string(base.size()) + " base patches, up to " + std::to_string(std::max(1, o.rounds)) +
-           " rounds of " + std::to_string(o.visibility_rays) + " rays per link, at most " +
-           std::to_string(o.max_links) + " links (" +
-           format_bytes(static_cast<double>(o.max_links) * sizeof(HierarchicalLink)) + ")";
+// "197 base patches, 25484 first links (1.75 MB), up to 4 rounds of 16 rays per link, refined within
+// 60000000 links and 11.8 GB": the work and what bounds its memory, told before the links are built.
+std::string linking_note(const PatchMesh& base, std::uint64_t first_links, std::size_t budget,
+                         const HierarchicalOptions& o) {
+    const std::string first =
+        format_bytes(static_cast<double>(first_links_memory_estimate(base.size(), first_links)));
+    return std::to_string(base.size()) + " base patches, " + std::to_string(first_links) + " first links (" +
+           first + "), up to " + std::to_string(std::max(1, o.rounds)) + " rounds of " +
+           std::to_string(o.visibility_rays) + " rays per link, refined within " +
+           std::to_string(o.max_links) + " links" +
+           (budget > 0 ? " and " + format_bytes(static_cast<double>(budget)) : std::string());
 }
 
 }  // namespace
@@ -131,7 +103,11 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
                                                               Progress* progress) {
     HierarchicalOptions o = options;
     if (o.visibility_rays == 0) o.visibility_rays = 16;
-    check_options(o, base.size());
+    check_refinement_settings(o.tolerance, o.min_patch_size, o.visibility_rays);
+    // Every pair of base patches that may face each other is a first link: counted, and checked against
+    // the budget, before anything is built.
+    const std::size_t budget = memory_budget_bytes(o.max_memory_bytes);
+    const FirstLinks first_links = count_first_links(base, o, budget, progress);
     auto system = std::make_unique<HierarchicalSystem>(base);
     for (const Patch& p : base.patches) {
         const Material& material = scene.surfaces[p.surface].material;
@@ -140,6 +116,7 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
     }
     HierarchicalReport report;
     report.base_patches = base.size();
+    report.first_links = first_links.total;
     double longest = 0.0;
     for (std::uint32_t e = 0; e < base.size(); ++e) longest = std::max(longest, system->tree.longest_edge(e));
     report.min_patch_size = o.min_patch_size > 0.0 ? o.min_patch_size : longest / 64.0;
@@ -150,18 +127,20 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
     for (double c : covered) system->exposed_share.push_back(static_cast<float>(1.0 - c));
     const LinkEstimator estimator(system->tree, system->exposed_share, rays, ray_offset(base),
                                   o.visibility_rays, o.seed);
-    LinkRefiner refiner(*system, estimator, o, report.min_patch_size, report, progress);
+    LinkRefiner refiner(*system, estimator, o, report.min_patch_size, budget, report, progress);
     for (int round = 0; round < std::max(1, o.rounds); ++round) {
         const Stopwatch refine_clock;
         refiner.set_epsilon(link_epsilon(*system, refiner.radiosity(), o.tolerance, round > 0));
         // The links are refined as they are estimated, so their count, and the share done, is not known
-        // in advance: the stage has no total.
-        if (progress) {
+        // in advance: the stage has no total, but for the first estimates of the first links.
+        if (progress && round == 0) {
+            progress->begin("linking elements, the first links", report.first_links);
+            progress->note(linking_note(base, report.first_links, budget, o));
+        } else if (progress) {
             progress->begin("linking elements, round " + std::to_string(round + 1), 0);
-            if (round == 0) progress->note(linking_note(base, o));
         }
         const bool changed =
-            round == 0 ? (refiner.refine(first_candidates(base)), true) : refiner.refine_again();
+            round == 0 ? (refiner.refine_first(base, first_links), true) : refiner.refine_again();
         report.refine_seconds += refine_clock.seconds();
         if (!changed) break;
         ++report.rounds;

@@ -223,13 +223,14 @@ TransportReport HierarchicalTransport::report() const {
     r.seconds = report_.refine_seconds + report_.solve_seconds;
     r.form_factor_passes = 1;
     r.details = {{"base_patches", static_cast<double>(report_.base_patches)},
+                 {"first_links", static_cast<double>(report_.first_links)},
                  {"tree_elements", static_cast<double>(report_.elements)},
                  {"leaves", static_cast<double>(report_.leaves)},
                  {"rounds", static_cast<double>(report_.rounds)},
                  {"refine_seconds", report_.refine_seconds},
                  {"round_solve_seconds", report_.solve_seconds},
                  {"min_patch_size", report_.min_patch_size}};
-    if (report_.limited) r.notes = "refinement stopped at the element or link limit";
+    if (report_.limited) r.notes = "refinement stopped at the element, link or memory limit";
     return r;
 }
 

@@ -31,26 +31,6 @@ double longest_patch_edge(const PatchMesh& patches) {
     return longest;
 }
 
-// The largest patch count whose estimate fits the budget (0 when not even one patch does).
-std::size_t patches_that_fit(std::size_t budget, std::size_t patches, FormFactorMethod method, int rays) {
-    std::size_t lo = 0, hi = patches;
-    while (lo < hi) {
-        const std::size_t mid = lo + (hi - lo + 1) / 2;
-        if (form_factor_memory_estimate(mid, method, rays) <= budget) {
-            lo = mid;
-        } else {
-            hi = mid - 1;
-        }
-    }
-    return lo;
-}
-
-// Rounds up to three significant digits, so "or larger" stays true.
-double round_up_3(double x) {
-    const double scale = std::pow(10.0, std::floor(std::log10(x)) - 2.0);
-    return std::ceil(x / scale) * scale;
-}
-
 // A patch size whose pass fits the budget, rounded up to three digits; 0 if none is found. Patch counts
 // scale about as 1 / size², which gives the first guess; with the scene's own count, the guess grows until
 // the count really fits.
@@ -58,10 +38,10 @@ double coarser_patch_size(const FormFactorOptions& options, int rays, std::size_
                           std::size_t patches, std::size_t fit) {
     // The margin covers the rounding of edges into whole patches.
     double guess = size * std::sqrt(static_cast<double>(patches) / static_cast<double>(fit)) * 1.05;
-    if (!options.count_patches_at) return round_up_3(guess);
+    if (!options.count_patches_at) return round_up_3_digits(guess);
     constexpr int kAttempts = 200;
     for (int attempt = 0; attempt < kAttempts; ++attempt, guess *= 1.05) {
-        const double rounded = round_up_3(guess);
+        const double rounded = round_up_3_digits(guess);
         if (form_factor_memory_estimate(options.count_patches_at(rounded), options.method, rays) <= budget) {
             return rounded;
         }
@@ -70,6 +50,11 @@ double coarser_patch_size(const FormFactorOptions& options, int rays, std::size_
 }
 
 }  // namespace
+
+double round_up_3_digits(double size) {
+    const double scale = std::pow(10.0, std::floor(std::log10(size)) - 2.0);
+    return std::ceil(size / scale) * scale;
+}
 
 std::string format_bytes(double bytes) {
     const char* units[] = {"bytes", "KB", "MB", "GB", "TB", "PB"};
@@ -81,6 +66,24 @@ std::string format_bytes(double bytes) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g %s", bytes, units[u]);
     return text;
+}
+
+std::size_t memory_budget_bytes(std::size_t max_memory_bytes) {
+    return max_memory_bytes > 0 ? max_memory_bytes : usable_memory_bytes() / 2;
+}
+
+std::size_t form_factor_patches_that_fit(std::size_t budget, FormFactorMethod method, int rays,
+                                         std::size_t at_most) {
+    std::size_t lo = 0, hi = at_most;
+    while (lo < hi) {
+        const std::size_t mid = lo + (hi - lo + 1) / 2;
+        if (form_factor_memory_estimate(mid, method, rays) <= budget) {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    return lo;
 }
 
 std::size_t form_factor_memory_estimate(std::size_t patches, FormFactorMethod method, int rays) {
@@ -101,8 +104,7 @@ std::size_t form_factor_memory_estimate(std::size_t patches, FormFactorMethod me
 }
 
 void check_memory_budget(const PatchMesh& patches, const FormFactorOptions& options, int rays) {
-    std::size_t budget = options.max_memory_bytes;
-    if (budget == 0) budget = usable_memory_bytes() / 2;
+    const std::size_t budget = memory_budget_bytes(options.max_memory_bytes);
     if (budget == 0) return;  // the machine would not say; let the allocator decide
     const std::size_t n = patches.size();
     const std::size_t need = form_factor_memory_estimate(n, options.method, rays);
@@ -111,7 +113,7 @@ void check_memory_budget(const PatchMesh& patches, const FormFactorOptions& opti
     std::ostringstream msg;
     msg << "form factors need about " << format_bytes(static_cast<double>(need)) << " for " << n
         << " patches, over the budget of " << format_bytes(static_cast<double>(budget));
-    const std::size_t fit = patches_that_fit(budget, n, options.method, rays);
+    const std::size_t fit = form_factor_patches_that_fit(budget, options.method, rays, n);
     const double size = options.patch_size > 0.0 ? options.patch_size : longest_patch_edge(patches);
     const double coarser =
         fit == 0 || !(size > 0.0) ? 0.0 : coarser_patch_size(options, rays, budget, size, n, fit);

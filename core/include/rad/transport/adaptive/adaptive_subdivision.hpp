@@ -28,15 +28,17 @@ struct AdaptiveOptions {
     // Form-factor passes and solves in all, the first on the base mesh; leaves chosen after the last are not
     // split, as nothing would solve them. 1 solves the base mesh only.
     int max_passes = 4;
-    // The leaves never exceed this many; when the chosen splits do not all fit, the most important are made
-    // and the loop ends after solving them.
-    std::size_t max_patches = 20'000;
     std::uint64_t seed = 1;  // for the shadow rays
 };
 
-// Why the loop ended.
-enum class AdaptiveStop { nothing_to_split, max_passes, max_patches };
-std::string_view adaptive_stop_name(AdaptiveStop stop);  // "nothing to split", "max passes", "max patches"
+// Why the loop ended. memory_budget: the chosen splits did not all fit the form factors' memory budget
+// (FormFactorOptions::max_memory_bytes); the most important were made and solved.
+enum class AdaptiveStop { nothing_to_split, max_passes, memory_budget };
+std::string_view adaptive_stop_name(AdaptiveStop stop);  // "nothing to split", "max passes", "memory budget"
+
+// The most leaves whose form-factor pass fits the budget of `ff` (form_factor_memory_estimate); the leaves
+// never exceed it, and a base mesh above it is refused with MemoryBudgetError before any work.
+std::size_t adaptive_leaves_that_fit(const FormFactorOptions& ff);
 
 // One form-factor pass and solve, and the splits chosen from its solution.
 struct AdaptivePass {
@@ -47,7 +49,7 @@ struct AdaptivePass {
     std::size_t solver_steps = 0;
     SolverStatus solver_status = SolverStatus::running;
     // Leaves each criterion asked to split, counted under both when both did, before the size limit and
-    // the budget.
+    // the memory budget.
     std::size_t gradient_leaves = 0;
     std::size_t shadow_leaves = 0;
     std::size_t too_small = 0;  // asked, but at the minimum size
@@ -75,8 +77,9 @@ struct AdaptiveResult {
 // surface (gradient) or where the share of a bright patch's light that reaches a leaf changes across it
 // (shadow boundaries: the emitters and brightest patches, traced with shadow rays), and solves again, until
 // nothing is left to split or a bound is reached. The result depends on the seeds only, not on threads.
-// Throws InputError for bad options (max_patches below the base's size), what compute_form_factors and
-// make_solver throw, and Cancelled when `progress` is cancelled.
+// Throws InputError for bad options, MemoryBudgetError when the base mesh's form factors alone exceed the
+// budget (with a coarser patch size, as compute_form_factors), what compute_form_factors and make_solver
+// throw, and Cancelled when `progress` is cancelled.
 AdaptiveResult subdivide_adaptively(const Scene& scene, const PatchMesh& base, const FormFactorOptions& ff,
                                     SolverMethod method, const SolverOptions& solver,
                                     const AdaptiveOptions& options, Progress* progress = nullptr);

@@ -46,7 +46,8 @@ struct ClusteredReport {
     std::uint64_t rays = 0;
     double seconds = 0.0;
     std::size_t memory_bytes = 0;
-    bool limited = false;  // max_links stopped refinement
+    bool limited = false;        // max_links stopped refinement
+    double balance_error = 0.0;  // the largest row error the energy balancing of the leaves left
     double min_patch_size = 0.0;
 };
 
@@ -88,8 +89,13 @@ struct ClusterHierarchy {
     std::vector<glm::dvec3> emission;     // per element, E = π Le
     std::vector<ClusterLink> links;       // sorted by receiver
     std::vector<std::uint32_t> receiver_runs;
-    std::vector<float> leaf_scale;  // per element (leaves only): gathered factors scaled to reach
-    std::vector<float> reach;       // per element (leaves only): measured share of rays that meet a front
+    // Per leaf (in `leaves` order): the measured shares of rays that meet a front and that are not covered
+    // (another surface face to face), and the scales of what it gathers and what it sends that make the
+    // links conserve energy (balance_leaves). Its radiosity is that of its exposed part.
+    std::vector<float> reach;
+    std::vector<float> exposed;
+    std::vector<float> receive_scale;
+    std::vector<float> send_scale;
     std::vector<std::uint32_t> leaves;
     PatchMesh leaf_patches;
 

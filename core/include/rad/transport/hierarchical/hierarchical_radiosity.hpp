@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <span>
@@ -31,6 +32,17 @@ struct HierarchicalOptions {
     std::size_t max_elements = 4'000'000;
     std::size_t max_links = 60'000'000;
     std::uint64_t seed = 1;
+    // The memory budget (0: half the machine's or container's memory, as for form factors). Every pair of
+    // base patches that may face each other is a first link, whatever the refinement: when those alone
+    // would not fit, the build is refused with MemoryBudgetError before any link is made; past them,
+    // refinement stops splitting at the budget as at max_elements and max_links (the estimates:
+    // core/src/transport/hierarchical/hierarchical_first_links.hpp).
+    std::size_t max_memory_bytes = 0;
+    // Only for naming a coarser patch size when the first links do not fit, as in FormFactorOptions: the
+    // size the base patches were made with (0: their longest edge stands in for it), and how many base
+    // patches the scene makes at a size.
+    double patch_size = 0.0;
+    std::function<std::size_t(double patch_size)> count_patches_at;
 };
 
 // Light from `source` gathered by `receiver`. The irradiance it brings varies over the receiver: at the
@@ -56,13 +68,14 @@ struct HierarchicalReport {
     std::size_t elements = 0;
     std::size_t leaves = 0;
     std::size_t links = 0;
-    std::size_t rounds = 0;        // rounds that changed the links
-    std::uint64_t rays = 0;        // visibility rays cast
-    double refine_seconds = 0.0;   // estimating and refining links
-    double solve_seconds = 0.0;    // the solves between rounds
-    std::size_t memory_bytes = 0;  // elements, points and links
-    bool limited = false;          // max_elements or max_links stopped a split
-    double min_patch_size = 0.0;   // the bound used
+    std::size_t rounds = 0;         // rounds that changed the links
+    std::uint64_t rays = 0;         // visibility rays cast
+    double refine_seconds = 0.0;    // estimating and refining links
+    double solve_seconds = 0.0;     // the solves between rounds
+    std::size_t memory_bytes = 0;   // elements, points and links
+    std::uint64_t first_links = 0;  // pairs of base patches that may face each other (each way)
+    bool limited = false;           // max_elements, max_links or the memory budget stopped a split
+    double min_patch_size = 0.0;    // the bound used
 };
 
 // The elements, their links, and the leaves as patches: what a solver steps.
@@ -90,7 +103,9 @@ struct HierarchicalSystem {
 };
 
 // Builds the hierarchy over `base` (build_patches of `scene`): links between all base patches that see each
-// other, refined, solved and refined again for options.rounds rounds. Throws InputError for bad options and
+// other, refined, solved and refined again for options.rounds rounds. The first links are counted before
+// any is made, and made a block of receivers at a time, so the n² pairs are never listed at once. Throws
+// InputError for bad options, MemoryBudgetError when the first links would not fit the budget, and
 // Cancelled when progress is cancelled.
 std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene, const PatchMesh& base,
                                                               const HierarchicalOptions& options,

@@ -1,0 +1,169 @@
+#include "bench/scaling_sweep.hpp"
+
+#include <malloc.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include "bench/peak_memory.hpp"
+#include "pipeline/radiosity_pipeline.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+
+namespace rad {
+
+namespace {
+
+double detail(const TransportReport& report, const std::string& name) {
+    for (const TransportDetail& d : report.details)
+        if (d.name == name) return d.value;
+    return 0.0;
+}
+
+double furnace_error(std::span<const glm::dvec3> radiosity) {
+    const double expected = kFurnaceEmission / (1.0 - kFurnaceReflectance);
+    double worst = 0.0;
+    for (const glm::dvec3& b : radiosity)
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(b[c] - expected) / expected);
+    return worst;
+}
+
+ScalingRow run_furnace(const std::string& spelled, const std::string& subdivision, bool& peak_per_run) {
+    ScalingRow row;
+    row.scene = "builtin:furnace-" + spelled;
+    row.subdivision = subdivision;
+    // What the last run freed goes back to the system first, so this run's peak is its own.
+    malloc_trim(0);
+    peak_per_run = reset_peak_resident() && peak_per_run;
+    PipelineOptions options;
+    options.scene.scene = row.scene;
+    options.subdivision.method = subdivision;
+    try {
+        RadiosityPipeline pipeline(options);
+        for (const Surface& s : pipeline.loaded().scene.surfaces) row.faces += s.mesh.n_faces();
+        row.patches = pipeline.loaded().patches.size();
+        const StepReport& report = pipeline.solve();
+        const TransportReport transport = pipeline.transport().report();
+        row.elements = transport.elements;
+        row.links = transport.interactions;
+        row.clusters = static_cast<std::size_t>(detail(transport, "clusters"));
+        row.steps = report.step;
+        row.solver = std::string(solver_method_name(pipeline.method()));
+        row.converged = report.status == SolverStatus::converged;
+        row.mesh_seconds = pipeline.seconds().mesh;
+        row.build_seconds = pipeline.seconds().form_factors;
+        row.solve_seconds = pipeline.seconds().solve;
+        row.furnace_error = furnace_error(pipeline.solver().solution());
+    } catch (const std::exception& e) {
+        row.failure = e.what();
+    }
+    row.peak_bytes = peak_resident_bytes();
+    return row;
+}
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+}  // namespace
+
+ScalingPlan default_scaling_plan(bool quick) {
+    ScalingPlan plan;
+    if (quick) {
+        plan.faces = {"1k", "2k"};
+        plan.uniform_max_faces = 2'000;
+        return plan;
+    }
+    plan.faces = {"1k", "3k", "10k", "30k", "100k", "300k", "1m"};
+    plan.uniform_max_faces = 100'000;
+    return plan;
+}
+
+Crossover scaling_crossover(const std::vector<ScalingRow>& rows) {
+    // Per size, the uniform and clustered times, in the plan's order (ascending sizes).
+    struct Pair {
+        std::size_t faces = 0, uniform_patches = 0;
+        double uniform = 0.0, clustered = 0.0;
+    };
+    std::vector<Pair> pairs;
+    for (const ScalingRow& u : rows) {
+        if (u.subdivision != "uniform" || !u.failure.empty()) continue;
+        for (const ScalingRow& c : rows) {
+            if (c.subdivision == "clustered" && c.scene == u.scene && c.failure.empty())
+                pairs.push_back({u.faces, u.patches, u.seconds(), c.seconds()});
+        }
+    }
+    Crossover out;
+    if (pairs.empty()) {
+        out.text = "no size ran both ways";
+        return out;
+    }
+    const auto faster = [](const Pair& p) { return p.clustered < p.uniform; };
+    const auto first = std::find_if(pairs.begin(), pairs.end(), faster);
+    if (first == pairs.end()) {
+        out.text = "uniform was faster at every size both ran, up to " + std::to_string(pairs.back().faces) +
+                   " faces (" + std::to_string(pairs.back().uniform_patches) + " uniform patches)";
+        return out;
+    }
+    if (first == pairs.begin()) {
+        out.found = true;
+        out.text = "clustered was faster at every size both ran, from " + std::to_string(first->faces) +
+                   " faces (" + std::to_string(first->uniform_patches) + " uniform patches)";
+        return out;
+    }
+    // The ratio of times crosses 1 between the two sizes: interpolated in log(ratio) against log(faces).
+    const Pair& a = *(first - 1);
+    const Pair& b = *first;
+    const double ra = std::log(a.clustered / a.uniform), rb = std::log(b.clustered / b.uniform);
+    const double t = ra / (ra - rb);
+    const auto at = [t](double x, double y) {
+        return std::exp(std::log(x) + t * (std::log(y) - std::log(x)));
+    };
+    out.found = true;
+    out.text = format("clustered gets faster than uniform at about %.0f faces",
+                      at(double(a.faces), double(b.faces))) +
+               format(" (%.0f uniform patches)", at(double(a.uniform_patches), double(b.uniform_patches))) +
+               ": uniform was faster at " + std::to_string(a.faces) + " faces (" +
+               format("%.2f s against ", a.uniform) + format("%.2f s), clustered at ", a.clustered) +
+               std::to_string(b.faces) + " (" + format("%.2f s against ", b.clustered) +
+               format("%.2f s)", b.uniform);
+    return out;
+}
+
+void check_scaling_plan(const ScalingPlan& plan) {
+    for (const std::string& spelled : plan.faces) furnace_faces("furnace-" + spelled);
+}
+
+void run_scaling(const ScalingPlan& plan, ScalingResults& results,
+                 const std::function<void(const ScalingResults&)>& row_done,
+                 const std::function<void(const std::string&)>& log) {
+    bool peak_per_run = true;
+    for (const std::string& spelled : plan.faces) {
+        for (const std::string& subdivision : plan.subdivisions) {
+            if (subdivision == "uniform" && furnace_faces("furnace-" + spelled) > plan.uniform_max_faces)
+                continue;
+            const ScalingRow row = run_furnace(spelled, subdivision, peak_per_run);
+            if (row.failure.empty()) {
+                log(format("%8.2f s  ", row.seconds()) + row.scene + "  " + subdivision + "  " +
+                    std::to_string(row.elements) + " elements  " + std::to_string(row.links) + " links" +
+                    format("  build %.2f s", row.build_seconds) +
+                    format("  solve %.2f s", row.solve_seconds) +
+                    format("  peak %.0f MB", double(row.peak_bytes) / 1e6) +
+                    format("  furnace error %.2g", row.furnace_error));
+            } else {
+                log(row.scene + "  " + subdivision + "  failed: " + row.failure);
+            }
+            results.rows.push_back(row);
+            row_done(results);
+        }
+    }
+    if (!peak_per_run) {
+        results.notes.push_back(
+            "peak memory is the process's since it started (this system cannot reset it between runs)");
+    }
+}
+
+}  // namespace rad

@@ -1,0 +1,188 @@
+#include "transport/clustered/cluster_balance.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "ray/coverage.hpp"
+#include "sampling/sampling.hpp"
+#include "transport/clustered/cluster_flow.hpp"
+#include "transport/clustered/cluster_geometry.hpp"
+#include "transport/uniform/form_factors_hemisphere.hpp"
+
+namespace rad {
+
+namespace {
+
+// Scaling rounds (Sinkhorn's alternation of rows and columns) and the row error that ends them early.
+constexpr int kBalanceRounds = 60;
+constexpr double kBalanceError = 1e-4;
+
+// Σ_k T_rk v_k for every leaf r (the unscaled gather, one channel).
+void gather_leaves(const ClusterHierarchy& h, std::span<const double> v, std::vector<double>& out) {
+    std::vector<glm::dvec3> values(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k) values[k] = glm::dvec3(v[k]);
+    NodeValues b;
+    Irradiance irradiance;
+    pull(h, values, b);
+    gather_push(h, b, irradiance);
+    out.resize(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k) out[k] = irradiance.element[h.leaves[k]].x;
+}
+
+// Points per leaf that probe for a closed object standing on it.
+constexpr int kLeafCoverageProbes = 32;
+
+// Leaves pooled until their rays measure the links' bias to a few per cent.
+constexpr std::size_t kPoolLeaves = 16;
+
+// Per leaf, the ratio of measured reach to the links' row sum over a pool of leaves around it: its base
+// patch when that has kPoolLeaves leaves, else the smallest cluster above it that has. The links' error
+// varies slowly over the scene; one leaf's 64 rays are too noisy to correct it alone.
+std::vector<double> pooled_bias(const ClusterHierarchy& h, std::span<const double> links) {
+    struct Pool {
+        double measured = 0.0, linked = 0.0;
+        std::size_t leaves = 0;
+        void add(const Pool& o) {
+            measured += o.measured;
+            linked += o.linked;
+            leaves += o.leaves;
+        }
+        double ratio() const { return linked > 0.0 ? measured / linked : 1.0; }
+    };
+    std::vector<Pool> patch(h.tree.base_size()), cluster(h.clusters.size());
+    for (std::size_t k = 0; k < h.leaves.size(); ++k) {
+        const Element& e = h.tree[h.leaves[k]];
+        Pool& pool = patch[e.base_patch];
+        pool.measured += e.shape.area * h.reach[k];
+        pool.linked += e.shape.area * links[k];
+        ++pool.leaves;
+    }
+    std::vector<std::uint32_t> parent(h.clusters.size(), 0), patch_cluster(h.tree.base_size(), 0);
+    for (std::size_t c = h.clusters.size(); c-- > 0;) {
+        const ClusterHierarchy::Cluster& node = h.clusters[c];
+        for (std::uint32_t k = 0; k < node.child_count; ++k) {
+            cluster[c].add(cluster[node.first_child + k]);
+            parent[node.first_child + k] = static_cast<std::uint32_t>(c);
+        }
+        if (node.child_count > 0) continue;
+        for (std::uint32_t k = node.patch_begin; k < node.patch_end; ++k) {
+            cluster[c].add(patch[h.patch_order[k]]);
+            patch_cluster[h.patch_order[k]] = static_cast<std::uint32_t>(c);
+        }
+    }
+    std::vector<double> patch_ratio(patch.size());
+    for (std::size_t p = 0; p < patch.size(); ++p) {
+        if (patch[p].leaves >= kPoolLeaves) {
+            patch_ratio[p] = patch[p].ratio();
+            continue;
+        }
+        std::uint32_t c = patch_cluster[p];
+        while (c != 0 && cluster[c].leaves < kPoolLeaves) c = parent[c];
+        patch_ratio[p] = cluster[c].ratio();
+    }
+    std::vector<double> bias(h.leaves.size());
+    for (std::size_t k = 0; k < h.leaves.size(); ++k) bias[k] = patch_ratio[h.tree[h.leaves[k]].base_patch];
+    return bias;
+}
+
+// Per leaf, the reach of its exposed part: the links' row sum corrected by the pooled bias, then moved
+// towards the leaf's own measurement by what exceeds twice its standard error (a closed scene's rays all
+// arrive: exactly 1), over the exposed share (the links and the measurement both count the covered part as
+// blocked).
+std::vector<double> reach_targets(const ClusterHierarchy& h) {
+    const std::size_t n = h.leaves.size();
+    std::vector<double> links;
+    gather_leaves(h, std::vector<double>(n, 1.0), links);
+    const std::vector<double> bias = pooled_bias(h, links);
+    std::vector<double> target(n, 0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double measured = h.reach[k];
+        if (!(links[k] > 0.0) || measured == 0.0) continue;  // covered, or seeing nothing
+        const double prior = std::min(1.0, links[k] * bias[k]);
+        const double noise = std::sqrt(measured * (1.0 - measured) / kReachRays);
+        const double excess = std::max(0.0, std::abs(measured - prior) - 2.0 * noise);
+        const double whole = prior + std::copysign(excess, measured - prior);
+        target[k] = h.exposed[k] > 0.0f ? std::min(1.0, whole / static_cast<double>(h.exposed[k])) : 0.0;
+    }
+    return target;
+}
+
+}  // namespace
+
+double exposed_area(const ClusterHierarchy& h, std::size_t leaf) {
+    return h.tree[h.leaves[leaf]].shape.area * static_cast<double>(h.exposed[leaf]);
+}
+
+void measure_reach(ClusterHierarchy& h, const RayScene& rays, double offset, double contact,
+                   std::uint64_t seed) {
+    h.reach.assign(h.leaves.size(), 1.0f);
+    h.exposed.assign(h.leaves.size(), 1.0f);
+    tbb::parallel_for(std::size_t(0), h.leaves.size(), [&](std::size_t k) {
+        const std::uint32_t e = h.leaves[k];
+        const Element& element = h.tree[e];
+        const ConvexPolygon polygon = element_polygon(h.tree, e);
+        RandomStream random(seed ^ 0x636c7573ull, e);
+        std::vector<glm::dvec2> origins(kReachRays), directions(kReachRays);
+        stratified_square(random, origins);
+        stratified_square(random, directions);
+        const Frame frame = frame_around(element.shape.normal);
+        std::vector<Ray> batch(kReachRays);
+        for (std::size_t i = 0; i < kReachRays; ++i)
+            batch[i] =
+                Ray{point_on_convex_polygon(polygon.span(), origins[i]) + offset * element.shape.normal, 0.0f,
+                    frame.to_world(cosine_direction(directions[i])), 1e30f};
+        std::vector<RayHit> hits(kReachRays);
+        rays.intersect(batch, hits);
+        std::size_t reached = 0, covered = 0, back = 0;
+        for (const RayHit& hit : hits) {
+            if (hit.patch == RayHit::kBackFace) ++back;
+            if (hit.patch >= RayHit::kBackFace) continue;
+            const bool head_on = glm::dot(h.tree[hit.patch].shape.normal, element.shape.normal) < -0.99;
+            if (head_on && static_cast<double>(hit.t) < contact) {
+                ++covered;
+            } else {
+                ++reached;
+            }
+        }
+        h.reach[k] = static_cast<float>(static_cast<double>(reached) / kReachRays);
+        // Rays that meet back faces may start inside a closed object standing on the leaf (a box without a
+        // bottom): the coverage probes tell.
+        const double inside = back > 0 ? covered_share(polygon.span(), element.shape.normal, rays, seed, e,
+                                                       offset, kLeafCoverageProbes)
+                                       : 0.0;
+        h.exposed[k] =
+            static_cast<float>(std::max(0.0, 1.0 - inside - static_cast<double>(covered) / kReachRays));
+    });
+}
+
+double balance_leaves(ClusterHierarchy& h) {
+    const std::size_t n = h.leaves.size();
+    const std::vector<double> target = reach_targets(h);
+    std::vector<double> area(n), receive(n, 0.0), send(n), rows, weights(n), columns(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        area[k] = exposed_area(h, k);
+        send[k] = target[k] > 0.0 ? 1.0 : 0.0;
+    }
+    double error = 0.0;
+    for (int round = 0; round < kBalanceRounds; ++round) {
+        gather_leaves(h, send, rows);
+        error = 0.0;
+        for (std::size_t k = 0; k < n; ++k) {
+            if (round > 0) error = std::max(error, std::abs(receive[k] * rows[k] - target[k]));
+            receive[k] = rows[k] > 0.0 ? target[k] / rows[k] : 0.0;
+        }
+        if (round > 0 && error < kBalanceError) break;
+        for (std::size_t k = 0; k < n; ++k) weights[k] = area[k] * receive[k];
+        spread(h, weights, columns);
+        for (std::size_t k = 0; k < n; ++k)
+            send[k] = columns[k] > 0.0 ? target[k] * area[k] / columns[k] : 0.0;
+    }
+    h.receive_scale.assign(receive.begin(), receive.end());
+    h.send_scale.assign(send.begin(), send.end());
+    return error;
+}
+
+}  // namespace rad

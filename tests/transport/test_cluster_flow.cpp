@@ -1,0 +1,88 @@
+// The transpose of the clustered gather is exact: for any u and v, u · (T v) = (Tᵀ u) · v, with T the
+// leaves' unscaled gather (pull, links, push). The energy balancing of the leaves rests on it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/scene_transport.hpp"
+#include "transport/clustered/cluster_flow.hpp"
+
+namespace rad {
+namespace {
+
+TEST(ClusterFlow, SpreadIsTheTransposeOfTheGather) {
+    const Scene scene = make_builtin_scene("cornell");
+    const PatchMesh base = build_patches(scene, MeshingOptions{140.0});
+    TransportSettings settings;
+    settings.subdivision = Subdivision::clustered;
+    const SceneTransport built = build_scene_transport(scene, base, settings);
+    const auto& h = dynamic_cast<const ClusteredTransport&>(*built.transport).hierarchy();
+    ASSERT_GT(h.links.size(), 1000u);
+    const std::size_t n = h.leaves.size();
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (int trial = 0; trial < 3; ++trial) {
+        std::vector<glm::dvec3> v(n);
+        std::vector<double> u(n), spread_u(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            v[k] = glm::dvec3(uniform(random));
+            u[k] = uniform(random);
+        }
+        NodeValues b;
+        Irradiance irradiance;
+        pull(h, v, b);
+        gather_push(h, b, irradiance);
+        spread(h, u, spread_u);
+        double forward = 0.0, backward = 0.0;
+        for (std::size_t k = 0; k < n; ++k) {
+            forward += u[k] * irradiance.element[h.leaves[k]].x;
+            backward += spread_u[k] * v[k].x;
+        }
+        EXPECT_GT(forward, 0.0);
+        EXPECT_NEAR(backward / forward, 1.0, 1e-9);
+    }
+}
+
+// After balancing, what each leaf gathers of a uniform radiosity (its row sum) and the share of its own
+// light that arrives somewhere (its column, per unit of exposed area) are the same: emitted = absorbed +
+// escaped for any radiosity, not only a converged one.
+TEST(ClusterFlow, BalancedLeavesSendWhatTheyGather) {
+    const Scene scene = make_builtin_scene("cornell");
+    const PatchMesh base = build_patches(scene, MeshingOptions{140.0});
+    TransportSettings settings;
+    settings.subdivision = Subdivision::clustered;
+    const SceneTransport built = build_scene_transport(scene, base, settings);
+    const Transport& transport = *built.transport;
+    const auto& h = dynamic_cast<const ClusteredTransport&>(transport).hierarchy();
+    const std::size_t n = transport.size();
+    const std::vector<double> rows = transport.reach();
+    std::vector<double> weights(n), columns(n);
+    for (std::size_t k = 0; k < n; ++k) weights[k] = transport.area[k] * h.receive_scale[k];
+    spread(h, weights, columns);
+    double worst = 0.0, lit = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double column = columns[k] * h.send_scale[k] / transport.area[k];
+        worst = std::max(worst, std::abs(column - rows[k]));
+        lit += rows[k] > 0.0 ? 1.0 : 0.0;
+    }
+    EXPECT_GT(lit, 0.9 * static_cast<double>(n));
+    EXPECT_LT(worst, 1e-3);
+    // Any radiosity, converged or not, balances.
+    std::vector<glm::dvec3> radiosity(n);
+    for (std::size_t k = 0; k < n; ++k)
+        radiosity[k] = glm::dvec3(0.5 + 0.5 * std::sin(0.1 * static_cast<double>(k)));
+    std::vector<glm::dvec3> arriving(n);
+    transport.gather(radiosity, arriving);
+    double sent = 0.0, received = 0.0, escaped = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        sent += transport.area[k] * radiosity[k].x;
+        received += transport.area[k] * arriving[k].x;
+        escaped += transport.area[k] * (1.0 - rows[k]) * radiosity[k].x;
+    }
+    EXPECT_NEAR((received + escaped) / sent, 1.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace rad
