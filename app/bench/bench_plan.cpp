@@ -20,6 +20,7 @@ BenchPlan default_bench_plan(bool quick) {
         plan.further_view_frames = 3;
         plan.adaptive_tolerances = {0.5};
         plan.hierarchical_tolerances = {0.05};
+        plan.clustered_tolerances = {0.1};
         return plan;
     }
     plan.size_factors = {2.0, 1.4, 1.0, 0.7};
@@ -37,6 +38,7 @@ BenchPlan default_bench_plan(bool quick) {
     plan.comparison_max_spp = 1024;
     plan.adaptive_tolerances = {0.25, 0.15};
     plan.hierarchical_tolerances = {0.1, 0.03, 0.01, 0.003};
+    plan.clustered_tolerances = {0.2, 0.1, 0.05, 0.02};
     return plan;
 }
 

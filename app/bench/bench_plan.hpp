@@ -41,6 +41,7 @@ struct BenchPlan {
     // patches and solver), per scene.
     std::vector<double> adaptive_tolerances;
     std::vector<double> hierarchical_tolerances;
+    std::vector<double> clustered_tolerances;  // clustering, likewise (default 0.05)
 };
 
 // The default sweep (a few minutes on 2 cores), or the quick one for CI (seconds).

@@ -32,6 +32,7 @@ PipelineOptions pipeline_options(const std::string& scene, double patch_size, co
     PipelineOptions options;
     options.scene.scene = scene;
     options.scene.patch_size = patch_size;
+    options.subdivision.method = "uniform";  // the meshes of the sweep; run_subdivided sets its own
     options.form_factors.method = setting.method;
     options.form_factors.rays = setting.rays;
     options.solver.tolerance = plan.tolerance;
@@ -108,6 +109,7 @@ class SceneSweep {
             run_level(factor * default_size_, factor == *nearest_default);
         for (double tolerance : plan_.adaptive_tolerances) run_subdivided("adaptive", tolerance);
         for (double tolerance : plan_.hierarchical_tolerances) run_subdivided("hierarchical", tolerance);
+        for (double tolerance : plan_.clustered_tolerances) run_subdivided("clustered", tolerance);
     }
 
   private:
@@ -153,7 +155,7 @@ class SceneSweep {
         }
     }
 
-    // Adaptive or hierarchical subdivision with default first or base patches: times, form factors or links,
+    // Adaptive, hierarchical or clustered subdivision with default first or base patches: times, form factors or links,
     // and the image error (the leaves are not the patch reference's patches).
     void run_subdivided(const std::string& method, double tolerance) {
         PipelineOptions options = pipeline_options(scene_, 0.0, {FormFactorMethod::hemisphere, 0}, plan_);
@@ -170,7 +172,7 @@ class SceneSweep {
         row.links = pipeline.transport().report().interactions;
         row.patch_size = pipeline.loaded().patch_size;
         row.estimator =
-            (method == "hierarchical" ? "links" : "hemisphere " + std::to_string(kDefaultHemisphereRays)) +
+            (method == "adaptive" ? "hemisphere " + std::to_string(kDefaultHemisphereRays) : "links") +
             format(" tol %.3g", tolerance);
         row.solver = std::string(solver_method_name(pipeline.method()));
         row.steps = report.step;

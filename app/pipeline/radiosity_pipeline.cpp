@@ -143,6 +143,7 @@ TransportSettings RadiosityPipeline::transport_settings() const {
     settings.hierarchical.max_memory_bytes = settings.form_factors.max_memory_bytes;
     settings.hierarchical.patch_size = settings.form_factors.patch_size;
     settings.hierarchical.count_patches_at = settings.form_factors.count_patches_at;
+    settings.clustered.max_memory_bytes = settings.form_factors.max_memory_bytes;
     settings.clustered =
         clustered_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
     // An automatic choice solves the passes by bounces; the final solver is chosen once the transport is

@@ -76,6 +76,10 @@ TEST(RenderSaved, HierarchicalCornellBoxDrawsTheSameImageFromItsSavedSolution) {
     expect_same_image_from_saved({"--subdivision", "hierarchical"});
 }
 
+TEST(RenderSaved, ClusteredCornellBoxDrawsTheSameImageFromItsSavedSolution) {
+    expect_same_image_from_saved({"--subdivision", "clustered"});
+}
+
 TEST(RenderSaved, SeveralCamerasWriteSeveralImagesFromOneSolve) {
     test::TempDir dir;
     const std::string out = (dir.path() / "view.png").string();

@@ -10,6 +10,7 @@
 #include "rad/scene/builtin_scenes.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/scene_transport.hpp"
+#include "rad/util/error.hpp"
 
 namespace rad {
 namespace {
@@ -110,6 +111,46 @@ TEST(Clustered, ClosedRoomWithBoxesKeepsItsLightAndAgreesWithUniformPatches) {
                     clustered.at(surface), b);
         EXPECT_NEAR(clustered.at(surface), b, 0.015 * b) << scene.surfaces[surface].name;
     }
+}
+
+}  // namespace
+}  // namespace rad
+
+namespace rad {
+namespace {
+
+// The memory budget: base patches that alone would not fit are refused before any work, with the figures;
+// a budget the refinement reaches stops it there, says so, and still conserves energy.
+TEST(Clustered, KeepsToTheMemoryBudget) {
+    const Scene scene = make_builtin_scene("cornell");
+    const PatchMesh base = build_patches(scene, MeshingOptions{4.0 * default_patch_size(scene)});
+    ClusteredOptions options;
+    options.max_memory_bytes = base.size() * kClusteredElementBytes - 1;
+    try {
+        make_clustered_transport(scene, base, options);
+        ADD_FAILURE() << "not refused";
+    } catch (const MemoryBudgetError& e) {
+        EXPECT_EQ(e.needed_bytes, base.size() * kClusteredElementBytes);
+        EXPECT_EQ(e.budget_bytes, options.max_memory_bytes);
+        EXPECT_EQ(e.patches, base.size());
+    }
+    const auto unlimited = make_clustered_transport(scene, base, ClusteredOptions{});
+    EXPECT_FALSE(unlimited->clustered_report().memory_limited);
+    options.max_memory_bytes = 2 * base.size() * kClusteredElementBytes;
+    const auto limited = make_clustered_transport(scene, base, options);
+    EXPECT_TRUE(limited->clustered_report().memory_limited);
+    EXPECT_NE(limited->report().notes.find("memory budget"), std::string::npos);
+    // Refinement stops at the budget; the pairs already queued are still linked, a few per cent over it.
+    const std::size_t counted = limited->hierarchy().tree.size() * kClusteredElementBytes +
+                                limited->hierarchy().links.size() * kClusteredLinkBytes;
+    EXPECT_LT(static_cast<double>(counted), 1.1 * static_cast<double>(options.max_memory_bytes));
+    EXPECT_LT(limited->size(), unlimited->size());
+    SolverOptions solver_options;
+    solver_options.tolerance = 1e-7;
+    auto solver = make_solver(SolverMethod::jacobi, *limited, solver_options);
+    ASSERT_TRUE(run_to_end(*solver).converged());
+    const EnergyBalance balance = energy_balance(*limited, solver->solution());
+    EXPECT_NEAR((balance.absorbed.x + balance.escaped.x) / balance.emitted.x, 1.0, 5e-3);
 }
 
 }  // namespace

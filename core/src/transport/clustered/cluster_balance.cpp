@@ -17,8 +17,9 @@ namespace rad {
 namespace {
 
 // Scaling rounds (Sinkhorn's alternation of rows and columns) and the row error that ends them early.
-constexpr int kBalanceRounds = 60;
-constexpr double kBalanceError = 1e-4;
+// A row error of 5e-4 leaves the energy balance within about 0.05 %.
+constexpr int kBalanceRounds = 40;
+constexpr double kBalanceError = 5e-4;
 
 // Σ_k T_rk v_k for every leaf r (the unscaled gather, one channel).
 void gather_leaves(const ClusterHierarchy& h, std::span<const double> v, std::vector<double>& out) {

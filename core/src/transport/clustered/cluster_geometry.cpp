@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <numbers>
 
 namespace rad {
@@ -25,6 +26,8 @@ NodeShape node_shape(const ClusterHierarchy& h, std::uint32_t node) {
         shape.area = c.area;
         shape.cluster = true;
         shape.facing = c.facing;
+        shape.lower = c.lower;
+        shape.upper = c.upper;
         return shape;
     }
     const Element& e = h.tree[index];
@@ -35,6 +38,22 @@ NodeShape node_shape(const ClusterHierarchy& h, std::uint32_t node) {
     for (std::size_t k = 0; k < polygon.count; ++k)
         shape.radius = std::max(shape.radius, glm::length(polygon.corners[k] - shape.centre));
     return shape;
+}
+
+double cosine_to_box(const NodeShape& element, const NodeShape& cluster) {
+    const glm::dvec3 p = element.centre;
+    if (glm::all(glm::greaterThanEqual(p, cluster.lower)) && glm::all(glm::lessThanEqual(p, cluster.upper)))
+        return 1.0;
+    double best = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 corner((k & 1) ? cluster.upper.x : cluster.lower.x,
+                                (k & 2) ? cluster.upper.y : cluster.lower.y,
+                                (k & 4) ? cluster.upper.z : cluster.lower.z);
+        const glm::dvec3 d = corner - p;
+        const double length = glm::length(d);
+        if (length > 0.0) best = std::max(best, glm::dot(element.normal, d) / length);
+    }
+    return best;
 }
 
 double projected_area(const std::array<double, 6>& facing, const glm::dvec3& d) {
@@ -65,15 +84,17 @@ double link_factor(const NodeShape& receiver, const NodeShape& source, bool boun
     const double distance2 = glm::dot(d, d);
     const double distance = std::sqrt(distance2);
     const glm::dvec3 direction = distance > 0.0 ? d / distance : glm::dvec3(0.0);
-    auto cosine = [&](const NodeShape& at, const glm::dvec3& towards, double other_radius) {
+    auto cosine = [&](const NodeShape& at, const glm::dvec3& towards, const NodeShape& other) {
+        const double other_radius = other.radius;
         // A cluster's contents may all face the other node: as a bound its share is 1.
         if (at.cluster) return bound ? 1.0 : std::min(1.0, projected_area(at.facing, towards) / at.area);
         const double c = glm::dot(at.normal, towards);
+        if (bound && other.cluster) return cosine_to_box(at, other);
         const double lift = !bound ? 0.0 : distance > 0.0 ? std::min(1.0, other_radius / distance) : 1.0;
         return std::clamp(c + lift, 0.0, 1.0);
     };
-    const double c_r = cosine(receiver, direction, source.radius);
-    const double c_s = cosine(source, -direction, receiver.radius);
+    const double c_r = cosine(receiver, direction, source);
+    const double c_s = cosine(source, -direction, receiver);
     // As a bound, the kernel at the two balls' nearest approach: the centres' distance understates the
     // light between near parts of large nodes.
     const bool clusters = receiver.cluster || source.cluster;
@@ -103,7 +124,7 @@ void sample_node(const ClusterHierarchy& h, std::span<const double> patch_area_p
     if (ClusterNode::is_cluster(node)) {
         // A base patch by its area, kept with probability its cosine towards the other node (rejection):
         // the surfaces facing away send nothing there, and rays from them would meet the cluster itself.
-        constexpr int kTries = 32;
+        constexpr int kTries = 8;
         const ClusterHierarchy::Cluster& c = h.clusters[element];
         const double low = patch_area_prefix[c.patch_begin], high = patch_area_prefix[c.patch_end];
         for (int attempt = 0; attempt < kTries; ++attempt) {

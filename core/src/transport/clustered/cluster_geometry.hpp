@@ -16,9 +16,14 @@ struct NodeShape {
     double radius = 0.0;  // of a ball around centre that holds the node
     double area = 0.0;
     bool cluster = false;
-    glm::dvec3 normal{0.0};          // elements only
-    std::array<double, 6> facing{};  // clusters only: see ClusterHierarchy::Cluster
+    glm::dvec3 normal{0.0};             // elements only
+    std::array<double, 6> facing{};     // clusters only: see ClusterHierarchy::Cluster
+    glm::dvec3 lower{0.0}, upper{0.0};  // clusters only: the box
 };
+
+// The largest cosine, from an element's centre and normal, towards a corner of a cluster's box: 1 when
+// the centre lies in the box, 0 when the whole box is behind the element's plane.
+double cosine_to_box(const NodeShape& element, const NodeShape& cluster);
 
 // The area a cluster's surfaces present towards the unit direction d (their fronts facing it).
 double projected_area(const std::array<double, 6>& facing, const glm::dvec3& d);
@@ -26,14 +31,14 @@ double projected_area(const std::array<double, 6>& facing, const glm::dvec3& d);
 ConvexPolygon element_polygon(const ElementTree& tree, std::uint32_t element);
 NodeShape node_shape(const ClusterHierarchy& h, std::uint32_t node);
 
-// The form factor bound of a transfer from `source` to `receiver`, per unit radiosity of the source and
-// per unit area of the receiver: A_s c_s c_r / (π d² + A_s), the disk approximation that stays finite as
-// the two draw close, with c = cos θ for an element and 1/4 (the mean projected share of randomly oriented
-// surfaces) for a cluster; 0 when an element faces away from the other. As a bound (`bound`), an element's
-// cosine is taken at the nearest approach of the other's ball, so a grazing pair is not dismissed, a
-// cluster's share is 1 (its contents may all face the other node), and with a cluster at either end the
-// distance is the gap between the two balls (the centres' distance understates the light between near
-// parts of large clusters).
+// The form factor of a transfer from `source` to `receiver`, per unit radiosity of the source and per unit
+// area of the receiver: A_s c_s c_r / (π d² + A_s), the disk approximation that stays finite as the two
+// draw close, with c = cos θ for an element and the projected share of its contents (six-direction
+// summary) for a cluster; 0 when an element faces away from the other. As a bound (`bound`), an element's
+// cosine is its largest towards the corners of a cluster's box, or lifted by the other element's extent, so
+// a grazing pair is not dismissed; a cluster's share is 1 (its contents may all face the other node); and
+// with a cluster at either end the distance is the gap between the two balls (the centres' distance
+// understates the light between near parts of large clusters).
 double link_factor(const NodeShape& receiver, const NodeShape& source, bool bound);
 
 // The factor of a link (ClusterLink::factor, before visibility): link_factor, but for a cluster receiver

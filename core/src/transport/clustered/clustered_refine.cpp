@@ -1,6 +1,10 @@
 #include "transport/clustered/clustered_refine.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <vector>
@@ -35,6 +39,7 @@ class Refiner {
             if ((++visited & 0xfff) == 0 && progress && progress->cancelled()) throw Cancelled{};
             consider(r, s, stack);
         }
+        evaluate_links(progress);
     }
 
   private:
@@ -132,9 +137,17 @@ class Refiner {
         return in_front(a, b) && in_front(b, a);
     }
 
+    // The larger side of a link splits; a cluster counts twice its radius, as splitting it makes no new
+    // elements (an element beside a cluster of smaller faces would otherwise be cut down to their size).
+    static double size_for_split(const NodeShape& node) {
+        return node.cluster ? 2.0 * node.radius : node.radius;
+    }
+
     // Planar elements see nothing behind their plane.
     static bool behind(const NodeShape& element, const NodeShape& other) {
-        return !element.cluster && glm::dot(element.normal, other.centre - element.centre) <= -other.radius;
+        if (element.cluster) return false;
+        if (other.cluster) return cosine_to_box(element, other) <= 0.0;
+        return glm::dot(element.normal, other.centre - element.centre) <= -other.radius;
     }
 
     void consider(std::uint32_t r, std::uint32_t s,
@@ -156,14 +169,17 @@ class Refiner {
         const bool close = (receiver.cluster || source.cluster) && distance < receiver.radius + source.radius;
         const double error = reflectance_of(r) * radiosity_estimate(s) * bound;
         const bool wanted = close || error > epsilon_;
-        const bool budget = h_.links.size() < options_.max_links;
+        const bool memory = pending_.size() * kClusteredLinkBytes + h_.tree.size() * kClusteredElementBytes <
+                                report_.memory_budget ||
+                            report_.memory_budget == 0;
+        const bool budget = pending_.size() < options_.max_links && memory;
         if (wanted && budget) {
-            // Closeness alone splits a cluster, never an element: the faces of one convex object near each
-            // other would otherwise split each other down to the smallest size.
+            // Closeness splits the cluster, never the element: a face beside a cluster of the faces next
+            // to it (which it cannot see, but the cluster's bound cannot tell) would otherwise split down to
+            // the smallest size.
             const bool split_receiver =
-                close && !(error > epsilon_)
-                    ? receiver.cluster && (!source.cluster || receiver.radius >= source.radius)
-                    : (receiver.radius >= source.radius ? can_split(r) : !can_split(s));
+                close ? receiver.cluster && (!source.cluster || receiver.radius >= source.radius)
+                      : (size_for_split(receiver) >= size_for_split(source) ? can_split(r) : !can_split(s));
             if (split_receiver && can_split(r)) {
                 children(r, scratch_);
                 for (std::uint32_t c : scratch_) stack.emplace_back(c, s);
@@ -175,27 +191,59 @@ class Refiner {
                 return;
             }
         }
-        if (wanted && !budget) report_.limited = true;
-        const double factor = receiver.cluster || source.cluster
-                                  ? transfer_factor(receiver, source)
-                                  : element_factor(h_.tree, ClusterNode::index(r), ClusterNode::index(s));
-        if (!(factor > 0.0)) return;
-        const glm::dvec3 towards =
-            distance > 0.0 ? (source.centre - receiver.centre) / distance : glm::dvec3(0.0);
-        const double visible = visibility(r, s, towards);
-        if (visible > 0.0) {
-            const glm::dvec3 direction =
-                distance > 0.0 ? (source.centre - receiver.centre) / distance : glm::dvec3(0.0);
-            h_.links.push_back({r, s, static_cast<float>(factor * visible), glm::vec3(direction)});
-            if (receiver.cluster || source.cluster) ++report_.cluster_links;
+        if (wanted && !budget) (memory ? report_.limited : report_.memory_limited) = true;
+        pending_.emplace_back(r, s);
+    }
+
+    // The links' factors and visibility, on all cores: the tree no longer changes.
+    void evaluate_links(Progress* progress) {
+        std::vector<ClusterLink> links(pending_.size());
+        std::atomic<std::uint64_t> rays{0};
+        if (progress) progress->begin("shadow rays of the links", pending_.size());
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending_.size(), 256),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              if (progress && progress->cancelled()) throw Cancelled{};
+                              std::vector<Ray> buffer;
+                              std::vector<std::uint8_t> blocked;
+                              std::uint64_t traced = 0;
+                              for (std::size_t k = range.begin(); k < range.end(); ++k) {
+                                  buffer.clear();
+                                  links[k] = evaluate(pending_[k].first, pending_[k].second, buffer, blocked);
+                                  traced += buffer.size();
+                              }
+                              rays += traced;
+                              if (progress) progress->advance(range.size());
+                          });
+        report_.rays += rays.load();
+        for (const ClusterLink& link : links) {
+            if (!(link.factor > 0.0f)) continue;
+            h_.links.push_back(link);
+            if (ClusterNode::is_cluster(link.receiver) || ClusterNode::is_cluster(link.source))
+                ++report_.cluster_links;
         }
     }
 
-    // The share of shadow rays between random points of the two that nothing blocks.
-    double visibility(std::uint32_t r, std::uint32_t s, const glm::dvec3& towards) {
+    ClusterLink evaluate(std::uint32_t r, std::uint32_t s, std::vector<Ray>& buffer,
+                         std::vector<std::uint8_t>& blocked) const {
+        const NodeShape receiver = node_shape(h_, r), source = node_shape(h_, s);
+        const double distance = glm::length(source.centre - receiver.centre);
+        const glm::dvec3 towards =
+            distance > 0.0 ? (source.centre - receiver.centre) / distance : glm::dvec3(0.0);
+        ClusterLink link{r, s, 0.0f, glm::vec3(towards)};
+        const double factor = receiver.cluster || source.cluster
+                                  ? transfer_factor(receiver, source)
+                                  : element_factor(h_.tree, ClusterNode::index(r), ClusterNode::index(s));
+        if (!(factor > 0.0)) return link;
+        link.factor = static_cast<float>(factor * visibility(r, s, towards, buffer, blocked));
+        return link;
+    }
+
+    // The share of shadow rays between random points of the two that nothing blocks (the rays are left in
+    // `buffer`, which must come empty).
+    double visibility(std::uint32_t r, std::uint32_t s, const glm::dvec3& towards, std::vector<Ray>& buffer,
+                      std::vector<std::uint8_t>& blocked) const {
         const int n = std::max(1, options_.visibility_rays);
         RandomStream random(options_.seed, r, s);
-        rays_buffer_.clear();
         for (int k = 0; k < n; ++k) {
             glm::dvec3 from, from_normal, to, to_normal;
             sample_node(h_, area_prefix_, r, towards, random, from, from_normal);
@@ -203,13 +251,12 @@ class Refiner {
             // Each end leaves its surface on the side that faces the other.
             from += offset_ * (glm::dot(from_normal, to - from) >= 0.0 ? from_normal : -from_normal);
             to += offset_ * (glm::dot(to_normal, from - to) >= 0.0 ? to_normal : -to_normal);
-            rays_buffer_.push_back(Ray{from, 0.0f, to - from, 1.0f});
+            buffer.push_back(Ray{from, 0.0f, to - from, 1.0f});
         }
-        blocked_.resize(rays_buffer_.size());
-        rays_.occluded(rays_buffer_, blocked_);
-        report_.rays += rays_buffer_.size();
-        const auto open = std::count(blocked_.begin(), blocked_.end(), std::uint8_t{0});
-        return static_cast<double>(open) / static_cast<double>(rays_buffer_.size());
+        blocked.resize(buffer.size());
+        rays_.occluded(buffer, blocked);
+        const auto open = std::count(blocked.begin(), blocked.end(), std::uint8_t{0});
+        return static_cast<double>(open) / static_cast<double>(buffer.size());
     }
 
     ClusterHierarchy& h_;
@@ -222,8 +269,7 @@ class Refiner {
     std::vector<double> cluster_rho_, cluster_emission_;
     double ambient_ = 0.0, epsilon_ = 0.0;
     std::vector<std::uint32_t> scratch_;
-    std::vector<Ray> rays_buffer_;
-    std::vector<std::uint8_t> blocked_;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pending_;  // links found, not yet evaluated
 };
 
 }  // namespace

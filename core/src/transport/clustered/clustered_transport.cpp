@@ -2,6 +2,8 @@
 // itself, and gathered with pull, links and push through clusters and elements.
 #include "rad/transport/clustered/clustered_transport.hpp"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
@@ -18,6 +20,7 @@
 #include "transport/clustered/clustered_refine.hpp"
 #include "transport/refinement_settings.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
+#include "transport/uniform/form_factors_memory.hpp"
 #include "util/luminance.hpp"
 
 namespace rad {
@@ -44,6 +47,8 @@ void build_clusters(const PatchMesh& base, unsigned leaf_size, ClusterHierarchy&
         ClusterHierarchy::Cluster& cluster = h.clusters[c];
         cluster.centre = 0.5 * (node.bounds.lower + node.bounds.upper);
         cluster.radius = 0.5 * glm::length(node.bounds.upper - node.bounds.lower);
+        cluster.lower = node.bounds.lower;
+        cluster.upper = node.bounds.upper;
         cluster.first_child = node.leaf ? 0 : node.first;
         cluster.child_count = node.leaf ? 0 : node.count;
         cluster.patch_begin = node.item_begin;
@@ -60,7 +65,7 @@ void build_clusters(const PatchMesh& base, unsigned leaf_size, ClusterHierarchy&
 }
 
 void index_links(ClusterHierarchy& h) {
-    std::sort(h.links.begin(), h.links.end(), [](const ClusterLink& a, const ClusterLink& b) {
+    tbb::parallel_sort(h.links.begin(), h.links.end(), [](const ClusterLink& a, const ClusterLink& b) {
         return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
     });
     h.receiver_runs.clear();
@@ -102,6 +107,24 @@ RadiosityEstimate rough_solution(const ClusterHierarchy& h) {
         estimate.cluster[c] = luminance(values.cluster[c]);
     estimate.mean = h.clusters.empty() ? 0.0 : estimate.cluster[0];
     return estimate;
+}
+
+// The base patches as elements are the least clustering keeps; the links come on top, as refinement finds
+// them, up to the budget.
+void check_memory(std::size_t base_patches, ClusteredReport& report, const ClusteredOptions& options,
+                  Progress* progress) {
+    report.memory_budget = memory_budget_bytes(options.max_memory_bytes);
+    const std::size_t least = base_patches * kClusteredElementBytes;
+    if (report.memory_budget > 0 && least > report.memory_budget) {
+        throw MemoryBudgetError("clustering needs at least " + format_bytes(double(least)) + " for " +
+                                    std::to_string(base_patches) + " base patches, over the budget of " +
+                                    format_bytes(double(report.memory_budget)),
+                                least, report.memory_budget, base_patches, 0.0);
+    }
+    if (progress && report.memory_budget > 0)
+        progress->note(std::to_string(base_patches) + " base patches: at least " +
+                       format_bytes(double(least)) + ", links as refinement makes them, within " +
+                       format_bytes(double(report.memory_budget)));
 }
 
 }  // namespace
@@ -172,6 +195,9 @@ TransportReport ClusteredTransport::report() const {
                  {"cluster_links", static_cast<double>(report_.cluster_links)},
                  {"min_patch_size", report_.min_patch_size}};
     if (report_.limited) r.notes = "refinement stopped at the link limit";
+    if (report_.memory_limited)
+        r.notes = "refinement stopped at the memory budget (" + format_bytes(double(report_.memory_budget)) +
+                  "): a larger budget refines further";
     return r;
 }
 
@@ -190,6 +216,7 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
     report.base_patches = base.size();
     report.min_patch_size =
         options.min_patch_size > 0.0 ? options.min_patch_size : bounding_box(scene).largest_extent() / 256.0;
+    check_memory(base.size(), report, options, progress);
     if (progress) progress->begin("clustering", 0);
     build_clusters(base, options.max_cluster_patches, *h);
     const RayScene rays(base);
@@ -200,20 +227,29 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
         h->links.clear();
         report.cluster_links = 0;
         refine_cluster_links(*h, rays, offset, round, report, progress, estimate);
+        if (progress) progress->begin("sorting the links", 0);
         index_links(*h);
         h->leaves = h->tree.leaves();
+        if (!estimate) {  // the first guess: its links as they stand are close enough
+            h->receive_scale.assign(h->leaves.size(), 1.0f);
+            h->send_scale.assign(h->leaves.size(), 1.0f);
+            return;
+        }
+        if (progress) progress->begin("reach of the leaves", 0);
         measure_reach(*h, rays, offset, contact, options.seed);
+        if (progress) progress->begin("balancing the leaves' energy", 0);
         report.rays += h->leaves.size() * kReachRays;
         report.balance_error = balance_leaves(*h);
     };
     // Two rounds: the first, coarse, guesses each source's radiosity from the emission; its rough solution
     // tells the second which sources are bright (a floor under the light, say, that lights the ceiling).
-    if (progress) progress->begin("linking clusters and elements (first guess)", 0);
+    if (progress) progress->begin("refining links (first guess)", 0);
     ClusteredOptions coarse = options;
     coarse.tolerance = kFirstRoundTolerance * options.tolerance;
+    coarse.visibility_rays = 1;
     link(coarse, nullptr);
     const RadiosityEstimate estimate = rough_solution(*h);
-    if (progress) progress->begin("linking clusters and elements", 0);
+    if (progress) progress->begin("refining links", 0);
     link(options, &estimate);
     h->leaf_patches = h->tree.leaf_mesh(h->leaves);
     report.clusters = h->clusters.size();

@@ -33,8 +33,17 @@ struct ClusteredOptions {
     int visibility_rays = 4;           // shadow rays per link
     unsigned max_cluster_patches = 4;  // base patches in a leaf cluster
     std::size_t max_links = 50'000'000;
+    // Refinement stops where the elements and links would take more (0: half the machine's memory); a
+    // scene whose base patches alone would is refused up front (MemoryBudgetError).
+    std::size_t max_memory_bytes = 0;
     std::uint64_t seed = 1;
 };
+
+// What refinement counts per element and per link, for the memory budget: the element with its
+// reflectance, emission and per-leaf state (its leaf patch included); the link while pending, then made,
+// sorted and indexed.
+inline constexpr std::size_t kClusteredElementBytes = 512;
+inline constexpr std::size_t kClusteredLinkBytes = 72;
 
 struct ClusteredReport {
     std::size_t base_patches = 0;
@@ -46,7 +55,9 @@ struct ClusteredReport {
     std::uint64_t rays = 0;
     double seconds = 0.0;
     std::size_t memory_bytes = 0;
-    bool limited = false;        // max_links stopped refinement
+    bool limited = false;         // max_links stopped refinement
+    bool memory_limited = false;  // the memory budget stopped refinement
+    std::size_t memory_budget = 0;
     double balance_error = 0.0;  // the largest row error the energy balancing of the leaves left
     double min_patch_size = 0.0;
 };
@@ -74,6 +85,7 @@ struct ClusterHierarchy {
     struct Cluster {
         glm::dvec3 centre{0.0};
         double radius = 0.0;
+        glm::dvec3 lower{0.0}, upper{0.0};  // its box
         double area = 0.0;
         std::uint32_t first_child = 0;  // inner: children [first_child, first_child + child_count)
         std::uint32_t child_count = 0;  // 0: a leaf cluster, holding base patches [patch_begin, patch_end)
