@@ -155,8 +155,8 @@ class SceneSweep {
         }
     }
 
-    // Adaptive, hierarchical or clustered subdivision with default first or base patches: times, form factors or links,
-    // and the image error (the leaves are not the patch reference's patches).
+    // Adaptive, hierarchical or clustered subdivision with default first or base patches: times, form factors
+    // or links, and the image error (the leaves are not the patch reference's patches).
     void run_subdivided(const std::string& method, double tolerance) {
         PipelineOptions options = pipeline_options(scene_, 0.0, {FormFactorMethod::hemisphere, 0}, plan_);
         options.subdivision.method = method;
