@@ -8,7 +8,7 @@ Models are picked at random (SEED) among those that stand on the floor, scaled t
 depth and height (cm), and set on a grid of rows with 0.3 m between them, until their faces, counted as the
 program's loader counts them (non-planar or concave polygons split into triangles), are within 2 % of
 TARGET_FACES.
-Only Kd is kept from the models' materials (clamped below 1; textures, Ke and transparency are dropped).
+Only Kd is kept from the models' materials (clamped to [0.02, 0.9]; textures, Ke and transparency are dropped).
 """
 import random
 import re
