@@ -60,26 +60,32 @@ void RadiosityPipeline::choose_automatic_subdivision() {
     }
 }
 
+PipelineOptions options_from_saved(const SavedSettings& s, const PipelineOptions& base) {
+    PipelineOptions options = base;
+    options.scene.scene = s.scene_source;
+    options.scene.patch_size = s.patch_size;
+    options.form_factors.method =
+        s.form_factor_method == "analytic" ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
+    options.form_factors.rays = static_cast<int>(s.rays);
+    options.form_factors.seed = s.seed;
+    options.form_factors.enforce_reciprocity = s.reciprocity;
+    options.form_factors.normalize_rows = s.normalize_rows;
+    options.subdivision.method = s.subdivision;
+    options.subdivision.tolerance = s.refine_tolerance;
+    options.subdivision.min_patch_size = s.min_patch_size;
+    options.solver.method = s.solver;
+    options.solver.tolerance = s.tolerance;
+    options.solver.bounces = s.bounces;
+    options.solver.initial = s.initial;
+    options.solver.relaxation = s.relaxation;
+    return options;
+}
+
 RadiosityPipeline::RadiosityPipeline(SavedSolution saved, const std::string& path,
                                      const DisplayOptions& display)
     : saved_path_(path) {
     const SavedSettings& s = saved.settings;
-    options_.scene.scene = s.scene_source;
-    options_.scene.patch_size = s.patch_size;
-    options_.form_factors.method =
-        s.form_factor_method == "analytic" ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
-    options_.form_factors.rays = static_cast<int>(s.rays);
-    options_.form_factors.seed = s.seed;
-    options_.form_factors.enforce_reciprocity = s.reciprocity;
-    options_.form_factors.normalize_rows = s.normalize_rows;
-    options_.subdivision.method = s.subdivision;
-    options_.subdivision.tolerance = s.refine_tolerance;
-    options_.subdivision.min_patch_size = s.min_patch_size;
-    options_.solver.method = s.solver;
-    options_.solver.tolerance = s.tolerance;
-    options_.solver.bounces = s.bounces;
-    options_.solver.initial = s.initial;
-    options_.solver.relaxation = s.relaxation;
+    options_ = options_from_saved(s, options_);
     options_.display = display;
     try {
         subdivision_ = parse_subdivision(s.subdivision);

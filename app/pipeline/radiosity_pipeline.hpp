@@ -47,6 +47,10 @@ struct StageSeconds {
 // From a meshed scene to radiance per display vertex: the transport built once, then the solver stepped by
 // the caller (or to the end), and the display mesh built once. The viewer steps it; the commands run it
 // through. It never asks which kind of transport it holds.
+// The options a saved solution was solved with, over `base` (what the file does not hold: the memory
+// budget, the display, the threads).
+PipelineOptions options_from_saved(const SavedSettings& settings, const PipelineOptions& base);
+
 class RadiosityPipeline {
   public:
     // Loads and meshes the scene (for hierarchical radiosity, into base patches). Throws InputError for bad

@@ -41,29 +41,6 @@ std::vector<glm::dvec3> positive_difference(std::span<const glm::dvec3> now,
     return difference;
 }
 
-// The options a saved solution was solved with, as the panel edits them, over `base` (the memory budget, the
-// display). The same mapping as RadiosityPipeline's saved-solution constructor.
-PipelineOptions options_from_saved(const SavedSettings& s, const PipelineOptions& base) {
-    PipelineOptions options = base;
-    options.scene.scene = s.scene_source;
-    options.scene.patch_size = s.patch_size;
-    options.form_factors.method =
-        s.form_factor_method == "analytic" ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
-    options.form_factors.rays = static_cast<int>(s.rays);
-    options.form_factors.seed = s.seed;
-    options.form_factors.enforce_reciprocity = s.reciprocity;
-    options.form_factors.normalize_rows = s.normalize_rows;
-    options.subdivision.method = s.subdivision;
-    options.subdivision.tolerance = s.refine_tolerance;
-    options.subdivision.min_patch_size = s.min_patch_size;
-    options.solver.method = s.solver;
-    options.solver.tolerance = s.tolerance;
-    options.solver.bounces = s.bounces;
-    options.solver.initial = s.initial;
-    options.solver.relaxation = s.relaxation;
-    return options;
-}
-
 // Re-meshing a saved solution loads the scene it was solved from, which the file names but does not hold as
 // a file: it may have moved since.
 std::string missing_scene(const std::string& source) {
