@@ -12,11 +12,14 @@
 namespace rad {
 namespace {
 
-TEST(ClusterFlow, SpreadIsTheTransposeOfTheGather) {
+class ClusterFlow : public ::testing::TestWithParam<bool> {};  // isotropic clusters or not
+
+TEST_P(ClusterFlow, SpreadIsTheTransposeOfTheGather) {
     const Scene scene = make_builtin_scene("cornell");
     const PatchMesh base = build_patches(scene, MeshingOptions{140.0});
     TransportSettings settings;
     settings.subdivision = Subdivision::clustered;
+    settings.clustered.isotropic_clusters = GetParam();
     const SceneTransport built = build_scene_transport(scene, base, settings);
     const auto& h = dynamic_cast<const ClusteredTransport&>(*built.transport).hierarchy();
     ASSERT_GT(h.links.size(), 1000u);
@@ -48,11 +51,12 @@ TEST(ClusterFlow, SpreadIsTheTransposeOfTheGather) {
 // After balancing, what each leaf gathers of a uniform radiosity (its row sum) and the share of its own
 // light that arrives somewhere (its column, per unit of exposed area) are the same: emitted = absorbed +
 // escaped for any radiosity, not only a converged one.
-TEST(ClusterFlow, BalancedLeavesSendWhatTheyGather) {
+TEST_P(ClusterFlow, BalancedLeavesSendWhatTheyGather) {
     const Scene scene = make_builtin_scene("cornell");
     const PatchMesh base = build_patches(scene, MeshingOptions{140.0});
     TransportSettings settings;
     settings.subdivision = Subdivision::clustered;
+    settings.clustered.isotropic_clusters = GetParam();
     const SceneTransport built = build_scene_transport(scene, base, settings);
     const Transport& transport = *built.transport;
     const auto& h = dynamic_cast<const ClusteredTransport&>(transport).hierarchy();
@@ -83,6 +87,11 @@ TEST(ClusterFlow, BalancedLeavesSendWhatTheyGather) {
     }
     EXPECT_NEAR((received + escaped) / sent, 1.0, 1e-3);
 }
+
+INSTANTIATE_TEST_SUITE_P(Clusters, ClusterFlow, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                             return info.param ? "isotropic" : "oriented";
+                         });
 
 }  // namespace
 }  // namespace rad

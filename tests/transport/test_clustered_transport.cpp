@@ -119,6 +119,48 @@ TEST(Clustered, ClosedRoomWithBoxesKeepsItsLightAndAgreesWithUniformPatches) {
 namespace rad {
 namespace {
 
+// Clusters send and receive by the orientations of their contents, or isotropically: on the white room
+// (flat walls and boxes, clusters that are anything but random orientations) the oriented clusters agree
+// with uniform patches, the isotropic ones less.
+TEST(Clustered, OrientedClustersAgreeWithUniformPatchesBetterThanIsotropicOnes) {
+    const Scene scene = make_builtin_scene("white-room");
+    auto mean_by_surface = [&](Subdivision subdivision, bool isotropic) {
+        const double scale = subdivision == Subdivision::uniform ? 1.0 : 4.0;
+        const PatchMesh base = build_patches(scene, MeshingOptions{scale * default_patch_size(scene)});
+        TransportSettings settings;
+        settings.subdivision = subdivision;
+        settings.clustered.isotropic_clusters = isotropic;
+        const SceneTransport built = build_scene_transport(scene, base, settings);
+        SolverOptions options;
+        options.tolerance = 1e-6;
+        auto solver = make_solver(SolverMethod::jacobi, *built.transport, options);
+        EXPECT_TRUE(run_to_end(*solver).converged());
+        std::map<std::uint32_t, std::pair<double, double>> sums;
+        for (std::size_t i = 0; i < built.patches->size(); ++i) {
+            auto& [power, area] = sums[built.patches->patches[i].surface];
+            power += built.transport->area[i] * solver->solution()[i].x;
+            area += built.transport->area[i];
+        }
+        std::map<std::uint32_t, double> mean;
+        for (const auto& [surface, s] : sums) mean[surface] = s.first / s.second;
+        return mean;
+    };
+    const auto uniform = mean_by_surface(Subdivision::uniform, false);
+    const auto oriented = mean_by_surface(Subdivision::clustered, false);
+    const auto isotropic = mean_by_surface(Subdivision::clustered, true);
+    double oriented_error = 0.0, isotropic_error = 0.0;
+    for (const auto& [surface, b] : uniform) {
+        oriented_error = std::max(oriented_error, std::abs(oriented.at(surface) / b - 1.0));
+        isotropic_error = std::max(isotropic_error, std::abs(isotropic.at(surface) / b - 1.0));
+    }
+    std::printf(
+        "[ figures ] white room, largest surface difference from uniform patches: oriented %.2f %%, "
+        "isotropic %.2f %%\n",
+        100 * oriented_error, 100 * isotropic_error);
+    EXPECT_LT(oriented_error, 0.015);
+    EXPECT_LT(oriented_error, isotropic_error);
+}
+
 // The memory budget: base patches that alone would not fit are refused before any work, with the figures;
 // a budget the refinement reaches stops it there, says so, and still conserves energy.
 TEST(Clustered, KeepsToTheMemoryBudget) {

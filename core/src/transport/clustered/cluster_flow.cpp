@@ -19,9 +19,12 @@ void add_directional(DirectionalIrradiance& into, const glm::vec3& direction, co
         into[slot(a, direction[a])] += std::abs(static_cast<double>(direction[a])) * value;
 }
 
+// The mean of max(0, cos) over all directions: what a surface of random orientation takes.
+constexpr double kIsotropicShare = 0.25;
+
 // What a surface of normal n inside the cluster takes of it.
 glm::dvec3 taken_by(const DirectionalIrradiance& h, const glm::dvec3& n) {
-    glm::dvec3 sum(0.0);
+    glm::dvec3 sum = kIsotropicShare * h[kIsotropicSlot];
     for (int a = 0; a < 3; ++a) sum += std::max(0.0, n[a]) * h[2 * a] + std::max(0.0, -n[a]) * h[2 * a + 1];
     return sum;
 }
@@ -77,10 +80,15 @@ void gather_push(const ClusterHierarchy& h, const NodeValues& b, Irradiance& irr
                 const std::uint32_t receiver = h.links[h.receiver_runs[k]].receiver;
                 if (ClusterNode::is_cluster(receiver)) {
                     DirectionalIrradiance sum{};
-                    for (std::uint32_t l = h.receiver_runs[k]; l < h.receiver_runs[k + 1]; ++l)
-                        add_directional(
-                            sum, h.links[l].direction,
-                            static_cast<double>(h.links[l].factor) * value_of(b, h.links[l].source));
+                    for (std::uint32_t l = h.receiver_runs[k]; l < h.receiver_runs[k + 1]; ++l) {
+                        const glm::dvec3 value =
+                            static_cast<double>(h.links[l].factor) * value_of(b, h.links[l].source);
+                        if (h.isotropic) {
+                            sum[kIsotropicSlot] += value;
+                        } else {
+                            add_directional(sum, h.links[l].direction, value);
+                        }
+                    }
                     irradiance.cluster[ClusterNode::index(receiver)] = sum;
                 } else {
                     glm::dvec3 sum(0.0);
@@ -95,7 +103,8 @@ void gather_push(const ClusterHierarchy& h, const NodeValues& b, Irradiance& irr
         const DirectionalIrradiance above = irradiance.cluster[c];
         if (cluster.child_count > 0) {
             for (std::uint32_t k = 0; k < cluster.child_count; ++k)
-                for (int d = 0; d < 6; ++d) irradiance.cluster[cluster.first_child + k][d] += above[d];
+                for (std::size_t d = 0; d < above.size(); ++d)
+                    irradiance.cluster[cluster.first_child + k][d] += above[d];
         } else {
             for (std::uint32_t k = cluster.patch_begin; k < cluster.patch_end; ++k) {
                 const std::uint32_t p = h.patch_order[k];
@@ -122,13 +131,14 @@ void spread(const ClusterHierarchy& h, std::span<const double> weights, std::spa
         for (std::uint32_t c = element.first_child; c < element.first_child + 4; ++c)
             received[e] += received[c];
     }
-    std::vector<std::array<double, 6>> directional(h.clusters.size(), std::array<double, 6>{});
+    std::vector<std::array<double, 7>> directional(h.clusters.size(), std::array<double, 7>{});
     for (std::size_t c = h.clusters.size(); c-- > 0;) {
         const ClusterHierarchy::Cluster& cluster = h.clusters[c];
-        std::array<double, 6>& sum = directional[c];
+        std::array<double, 7>& sum = directional[c];
         if (cluster.child_count > 0) {
             for (std::uint32_t k = 0; k < cluster.child_count; ++k)
-                for (int d = 0; d < 6; ++d) sum[d] += directional[cluster.first_child + k][d];
+                for (std::size_t d = 0; d < sum.size(); ++d)
+                    sum[d] += directional[cluster.first_child + k][d];
             continue;
         }
         for (std::uint32_t k = cluster.patch_begin; k < cluster.patch_end; ++k) {
@@ -138,6 +148,7 @@ void spread(const ClusterHierarchy& h, std::span<const double> weights, std::spa
                 sum[2 * a] += std::max(0.0, n[a]) * received[p];
                 sum[2 * a + 1] += std::max(0.0, -n[a]) * received[p];
             }
+            sum[kIsotropicSlot] += kIsotropicShare * received[p];
         }
     }
     // The links, transposed: each source collects what its receivers take of it.
@@ -145,7 +156,9 @@ void spread(const ClusterHierarchy& h, std::span<const double> weights, std::spa
     for (const ClusterLink& link : h.links) {
         const std::uint32_t r = ClusterNode::index(link.receiver);
         double taken = 0.0;
-        if (ClusterNode::is_cluster(link.receiver)) {
+        if (ClusterNode::is_cluster(link.receiver) && h.isotropic) {
+            taken = directional[r][kIsotropicSlot];
+        } else if (ClusterNode::is_cluster(link.receiver)) {
             for (int a = 0; a < 3; ++a)
                 taken += std::abs(static_cast<double>(link.direction[a])) *
                          directional[r][slot(a, link.direction[a])];

@@ -20,8 +20,10 @@ struct NodeValues {
 };
 
 // What a cluster receives, by the direction it comes from: per axis direction (+x, −x, +y, −y, +z, −z),
-// the irradiance a surface facing that way takes (ClusterLink).
-using DirectionalIrradiance = std::array<glm::dvec3, 6>;
+// the irradiance a surface facing that way takes (ClusterLink); and, for isotropic clusters, in the seventh
+// slot, the irradiance at a surface facing each source, summed.
+inline constexpr int kIsotropicSlot = 6;
+using DirectionalIrradiance = std::array<glm::dvec3, 7>;
 
 struct Irradiance {
     std::vector<glm::dvec3> element;

@@ -26,6 +26,7 @@ NodeShape node_shape(const ClusterHierarchy& h, std::uint32_t node) {
         shape.area = c.area;
         shape.cluster = true;
         shape.facing = c.facing;
+        shape.isotropic = h.isotropic;
         shape.lower = c.lower;
         shape.upper = c.upper;
         return shape;
@@ -87,6 +88,7 @@ double link_factor(const NodeShape& receiver, const NodeShape& source, bool boun
     auto cosine = [&](const NodeShape& at, const glm::dvec3& towards, const NodeShape& other) {
         const double other_radius = other.radius;
         // A cluster's contents may all face the other node: as a bound its share is 1.
+        if (at.cluster && !bound && at.isotropic) return 0.25;
         if (at.cluster) return bound ? 1.0 : std::min(1.0, projected_area(at.facing, towards) / at.area);
         const double c = glm::dot(at.normal, towards);
         if (bound && other.cluster) return cosine_to_box(at, other);

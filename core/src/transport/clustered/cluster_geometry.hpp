@@ -18,6 +18,7 @@ struct NodeShape {
     bool cluster = false;
     glm::dvec3 normal{0.0};             // elements only
     std::array<double, 6> facing{};     // clusters only: see ClusterHierarchy::Cluster
+    bool isotropic = false;             // clusters only: a projected share of 1/4 in every direction
     glm::dvec3 lower{0.0}, upper{0.0};  // clusters only: the box
 };
 

@@ -207,6 +207,7 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
     check_refinement_settings(options.tolerance, options.min_patch_size, options.visibility_rays);
     const Stopwatch clock;
     auto h = std::make_unique<ClusterHierarchy>(base);
+    h->isotropic = options.isotropic_clusters;
     for (const Patch& p : base.patches) {
         const Material& material = scene.surfaces[p.surface].material;
         h->reflectance.push_back(material.reflectance);

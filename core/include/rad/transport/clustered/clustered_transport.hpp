@@ -23,7 +23,7 @@ namespace rad {
 // tolerance. Clusters send and receive by the orientations of their contents, summarized as the area their
 // surfaces present along each of the six axis directions (exact for axis-aligned surfaces, a smooth
 // approximation otherwise); an isotropic cluster (projected area A / 4 in every direction) is the
-// alternative, and for flat clusters such as a tessellated wall it is four times off.
+// alternative (isotropic_clusters), and for flat clusters such as a tessellated wall it is four times off.
 struct ClusteredOptions {
     // A link is refined while reflectance × the source's radiosity × the link's form-factor bound exceeds
     // tolerance × the scene's mean radiosity.
@@ -36,6 +36,10 @@ struct ClusteredOptions {
     // Refinement stops where the elements and links would take more (0: half the machine's memory); a
     // scene whose base patches alone would is refused up front (MemoryBudgetError).
     std::size_t max_memory_bytes = 0;
+    // Clusters send and receive isotropically (each surface inside takes a quarter of the irradiance at a
+    // surface facing the source, and a cluster's projected share is a quarter in every direction) instead of
+    // by the orientations of their contents: the alternative, kept to measure the difference.
+    bool isotropic_clusters = false;
     std::uint64_t seed = 1;
 };
 
@@ -99,6 +103,7 @@ struct ClusterHierarchy {
     ElementTree tree;
     std::vector<glm::dvec3> reflectance;  // per element
     std::vector<glm::dvec3> emission;     // per element, E = π Le
+    bool isotropic = false;               // ClusteredOptions::isotropic_clusters
     std::vector<ClusterLink> links;       // sorted by receiver
     std::vector<std::uint32_t> receiver_runs;
     // Per leaf (in `leaves` order): the measured shares of rays that meet a front and that are not covered
