@@ -14,13 +14,23 @@ namespace {
 
 class ClusterFlow : public ::testing::TestWithParam<bool> {};  // isotropic clusters or not
 
+// The Cornell box clustered on base patches of 140 mm.
+struct Cornell {
+    explicit Cornell(bool isotropic)
+        : scene(make_builtin_scene("cornell")), base(build_patches(scene, MeshingOptions{140.0})) {
+        TransportSettings settings;
+        settings.subdivision = Subdivision::clustered;
+        settings.clustered.isotropic_clusters = isotropic;
+        built = build_scene_transport(scene, base, settings);
+    }
+    Scene scene;
+    PatchMesh base;
+    SceneTransport built;
+};
+
 TEST_P(ClusterFlow, SpreadIsTheTransposeOfTheGather) {
-    const Scene scene = make_builtin_scene("cornell");
-    const PatchMesh base = build_patches(scene, MeshingOptions{140.0});
-    TransportSettings settings;
-    settings.subdivision = Subdivision::clustered;
-    settings.clustered.isotropic_clusters = GetParam();
-    const SceneTransport built = build_scene_transport(scene, base, settings);
+    const Cornell cornell(GetParam());
+    const SceneTransport& built = cornell.built;
     const auto& h = dynamic_cast<const ClusteredTransport&>(*built.transport).hierarchy();
     ASSERT_GT(h.links.size(), 1000u);
     const std::size_t n = h.leaves.size();
@@ -52,12 +62,8 @@ TEST_P(ClusterFlow, SpreadIsTheTransposeOfTheGather) {
 // light that arrives somewhere (its column, per unit of exposed area) are the same: emitted = absorbed +
 // escaped for any radiosity, not only a converged one.
 TEST_P(ClusterFlow, BalancedLeavesSendWhatTheyGather) {
-    const Scene scene = make_builtin_scene("cornell");
-    const PatchMesh base = build_patches(scene, MeshingOptions{140.0});
-    TransportSettings settings;
-    settings.subdivision = Subdivision::clustered;
-    settings.clustered.isotropic_clusters = GetParam();
-    const SceneTransport built = build_scene_transport(scene, base, settings);
+    const Cornell cornell(GetParam());
+    const SceneTransport& built = cornell.built;
     const Transport& transport = *built.transport;
     const auto& h = dynamic_cast<const ClusteredTransport&>(transport).hierarchy();
     const std::size_t n = transport.size();

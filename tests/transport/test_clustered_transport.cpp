@@ -74,34 +74,45 @@ TEST(Clustered, LinksGrowFarSlowerThanPairs) {
     EXPECT_LT(large.links, large.faces * large.faces / 20);
 }
 
+// A solve of `scene` to 1e-6: the exposed-area mean radiosity (red) of each surface, and the energy balance.
+struct SurfaceMeans {
+    std::map<std::uint32_t, double> mean;
+    EnergyBalance balance;
+};
+
+SurfaceMeans surface_means(const Scene& scene, Subdivision subdivision, bool isotropic = false) {
+    const double scale = subdivision == Subdivision::uniform ? 1.0 : 4.0;
+    const PatchMesh base = build_patches(scene, MeshingOptions{scale * default_patch_size(scene)});
+    TransportSettings settings;
+    settings.subdivision = subdivision;
+    settings.clustered.isotropic_clusters = isotropic;
+    const SceneTransport built = build_scene_transport(scene, base, settings);
+    SolverOptions options;
+    options.tolerance = 1e-6;
+    auto solver = make_solver(SolverMethod::jacobi, *built.transport, options);
+    EXPECT_TRUE(run_to_end(*solver).converged()) << solver->status_message();
+    SurfaceMeans out;
+    out.balance = energy_balance(*built.transport, solver->solution());
+    std::map<std::uint32_t, std::pair<double, double>> sums;  // Σ A B, Σ A
+    for (std::size_t i = 0; i < built.patches->size(); ++i) {
+        auto& [power, area] = sums[built.patches->patches[i].surface];
+        power += built.transport->area[i] * solver->solution()[i].x;
+        area += built.transport->area[i];
+    }
+    for (const auto& [surface, s] : sums) out.mean[surface] = s.first / s.second;
+    return out;
+}
+
 // The white room is closed, and its two boxes stand on the floor without bottoms: the floor under them is
 // covered, not a hole. Clustering must lose no light there (the covered parts neither gather nor send) and
 // agree with uniform patches on every wall.
 TEST(Clustered, ClosedRoomWithBoxesKeepsItsLightAndAgreesWithUniformPatches) {
     const Scene scene = make_builtin_scene("white-room");
-    auto solve = [&](Subdivision subdivision, double patch_scale, EnergyBalance& balance) {
-        const PatchMesh base = build_patches(scene, MeshingOptions{patch_scale * default_patch_size(scene)});
-        TransportSettings settings;
-        settings.subdivision = subdivision;
-        const SceneTransport built = build_scene_transport(scene, base, settings);
-        SolverOptions options;
-        options.tolerance = 1e-6;
-        auto solver = make_solver(SolverMethod::jacobi, *built.transport, options);
-        EXPECT_TRUE(run_to_end(*solver).converged()) << solver->status_message();
-        balance = energy_balance(*built.transport, solver->solution());
-        std::map<std::uint32_t, std::pair<double, double>> by_surface;  // Σ A B, Σ A
-        for (std::size_t i = 0; i < built.patches->size(); ++i) {
-            auto& [power, area] = by_surface[built.patches->patches[i].surface];
-            power += built.transport->area[i] * solver->solution()[i].x;
-            area += built.transport->area[i];
-        }
-        std::map<std::uint32_t, double> mean;
-        for (const auto& [surface, sums] : by_surface) mean[surface] = sums.first / sums.second;
-        return mean;
-    };
-    EnergyBalance clustered_balance, uniform_balance;
-    const auto clustered = solve(Subdivision::clustered, 4.0, clustered_balance);
-    const auto uniform = solve(Subdivision::uniform, 1.0, uniform_balance);
+    const SurfaceMeans clustered_run = surface_means(scene, Subdivision::clustered);
+    const SurfaceMeans uniform_run = surface_means(scene, Subdivision::uniform);
+    const EnergyBalance& clustered_balance = clustered_run.balance;
+    const auto& clustered = clustered_run.mean;
+    const auto& uniform = uniform_run.mean;
     const auto total = [](const glm::dvec3& v) { return v.x + v.y + v.z; };
     const double emitted = total(clustered_balance.emitted);
     EXPECT_NEAR((total(clustered_balance.absorbed) + total(clustered_balance.escaped)) / emitted, 1.0, 5e-3);
@@ -124,30 +135,9 @@ namespace {
 // with uniform patches, the isotropic ones less.
 TEST(Clustered, OrientedClustersAgreeWithUniformPatchesBetterThanIsotropicOnes) {
     const Scene scene = make_builtin_scene("white-room");
-    auto mean_by_surface = [&](Subdivision subdivision, bool isotropic) {
-        const double scale = subdivision == Subdivision::uniform ? 1.0 : 4.0;
-        const PatchMesh base = build_patches(scene, MeshingOptions{scale * default_patch_size(scene)});
-        TransportSettings settings;
-        settings.subdivision = subdivision;
-        settings.clustered.isotropic_clusters = isotropic;
-        const SceneTransport built = build_scene_transport(scene, base, settings);
-        SolverOptions options;
-        options.tolerance = 1e-6;
-        auto solver = make_solver(SolverMethod::jacobi, *built.transport, options);
-        EXPECT_TRUE(run_to_end(*solver).converged());
-        std::map<std::uint32_t, std::pair<double, double>> sums;
-        for (std::size_t i = 0; i < built.patches->size(); ++i) {
-            auto& [power, area] = sums[built.patches->patches[i].surface];
-            power += built.transport->area[i] * solver->solution()[i].x;
-            area += built.transport->area[i];
-        }
-        std::map<std::uint32_t, double> mean;
-        for (const auto& [surface, s] : sums) mean[surface] = s.first / s.second;
-        return mean;
-    };
-    const auto uniform = mean_by_surface(Subdivision::uniform, false);
-    const auto oriented = mean_by_surface(Subdivision::clustered, false);
-    const auto isotropic = mean_by_surface(Subdivision::clustered, true);
+    const auto uniform = surface_means(scene, Subdivision::uniform).mean;
+    const auto oriented = surface_means(scene, Subdivision::clustered).mean;
+    const auto isotropic = surface_means(scene, Subdivision::clustered, true).mean;
     double oriented_error = 0.0, isotropic_error = 0.0;
     for (const auto& [surface, b] : uniform) {
         oriented_error = std::max(oriented_error, std::abs(oriented.at(surface) / b - 1.0));
