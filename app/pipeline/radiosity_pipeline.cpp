@@ -41,23 +41,32 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
         check_solver_supported(method_, has_matrix(subdivision_));
     check_solver_options(rad::solver_options(options.solver, 1));
     const Stopwatch clock;
-    loaded_ = load_and_mesh(options.scene, base_patch_scale(subdivision_));
-    if (automatic) choose_automatic_subdivision();
+    if (automatic) {
+        loaded_ = load_scene_only(options.scene);
+        choose_automatic_subdivision();
+    } else {
+        loaded_ = load_and_mesh(options.scene, base_patch_scale(subdivision_));
+    }
     seconds_.mesh = clock.seconds();
     solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
 }
 
 void RadiosityPipeline::choose_automatic_subdivision() {
-    subdivision_ = choose_subdivision(Subdivision::automatic, loaded_.patches.size());
+    // Every face is at least one patch: a scene of more faces than the rule allows is clustered without
+    // meshing it at the uniform size first.
+    std::size_t faces = 0;
+    for (const Surface& surface : loaded_.scene.surfaces) faces += surface.mesh.n_faces();
+    subdivision_ = choose_subdivision(Subdivision::automatic, faces);
+    if (subdivision_ == Subdivision::uniform) {
+        mesh_loaded(loaded_, options_.scene, 1.0);
+        subdivision_ = choose_subdivision(Subdivision::automatic, loaded_.patches.size());
+    }
     options_.subdivision.method = std::string(subdivision_name(subdivision_));
     if (!automatic_method(options_.solver)) check_solver_supported(method_, has_matrix(subdivision_));
     // Clustering's base patches are larger, unless the command line gave their size.
-    if (subdivision_ != Subdivision::uniform && options_.scene.patch_size <= 0.0) {
-        loaded_.patch_size *= base_patch_scale(subdivision_);
-        MeshingOptions meshing;
-        meshing.patch_size = loaded_.patch_size;
-        loaded_.patches = build_patches(loaded_.scene, meshing);
-    }
+    const bool meshed = loaded_.patches.size() > 0;
+    if (subdivision_ != Subdivision::uniform && (!meshed || options_.scene.patch_size <= 0.0))
+        mesh_loaded(loaded_, options_.scene, base_patch_scale(subdivision_));
 }
 
 PipelineOptions options_from_saved(const SavedSettings& s, const PipelineOptions& base) {

@@ -108,8 +108,8 @@ class RadiosityPipeline {
   private:
     TransportSettings transport_settings() const;
     void continue_saved();
-    // --subdivision auto: uniform patches or clustering by the uniform mesh's size (choose_subdivision),
-    // and clustering's larger base patches.
+    // --subdivision auto: uniform patches or clustering by the scene's faces, then the uniform mesh's size
+    // (choose_subdivision), and the patches that subdivision is meshed with.
     void choose_automatic_subdivision();
 
     PipelineOptions options_;

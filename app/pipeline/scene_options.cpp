@@ -23,15 +23,24 @@ void add_scene_options(CLI::App& command, SceneOptions& options) {
         ->check(positive_number());
 }
 
-LoadedScene load_and_mesh(const SceneOptions& options, double default_scale) {
+LoadedScene load_scene_only(const SceneOptions& options) {
     LoadedScene loaded;
     loaded.scene = load_scene(options.scene);
     for (const std::string& w : loaded.scene.warnings) std::cerr << "radiosity: warning: " << w << '\n';
+    return loaded;
+}
+
+void mesh_loaded(LoadedScene& loaded, const SceneOptions& options, double default_scale) {
     loaded.patch_size =
         options.patch_size > 0.0 ? options.patch_size : default_scale * default_patch_size(loaded.scene);
     MeshingOptions meshing;
     meshing.patch_size = loaded.patch_size;
     loaded.patches = build_patches(loaded.scene, meshing);
+}
+
+LoadedScene load_and_mesh(const SceneOptions& options, double default_scale) {
+    LoadedScene loaded = load_scene_only(options);
+    mesh_loaded(loaded, options, default_scale);
     return loaded;
 }
 

@@ -26,4 +26,8 @@ struct LoadedScene {
 // default_scale × the scene's default. Throws InputError for bad input.
 LoadedScene load_and_mesh(const SceneOptions& options, double default_scale = 1.0);
 
+// The two halves of load_and_mesh: the scene alone (no patches yet), then its patches.
+LoadedScene load_scene_only(const SceneOptions& options);
+void mesh_loaded(LoadedScene& loaded, const SceneOptions& options, double default_scale);
+
 }  // namespace rad

@@ -22,15 +22,13 @@ constexpr int kBalanceRounds = 40;
 constexpr double kBalanceError = 5e-4;
 
 // Σ_k T_rk v_k for every leaf r (the unscaled gather, one channel).
-void gather_leaves(const ClusterHierarchy& h, std::span<const double> v, std::vector<double>& out) {
-    std::vector<glm::dvec3> values(v.size());
+void gather_channel(const ClusterHierarchy& h, std::span<const double> v, std::vector<double>& out) {
+    std::vector<glm::dvec3> values(v.size()), gathered(v.size());
     for (std::size_t k = 0; k < v.size(); ++k) values[k] = glm::dvec3(v[k]);
-    NodeValues b;
-    Irradiance irradiance;
-    pull(h, values, b);
-    gather_push(h, b, irradiance);
+    FlowBuffers buffers;
+    gather_leaves(h, values, gathered, false, buffers);
     out.resize(v.size());
-    for (std::size_t k = 0; k < v.size(); ++k) out[k] = irradiance.element[h.leaves[k]].x;
+    for (std::size_t k = 0; k < v.size(); ++k) out[k] = gathered[k].x;
 }
 
 // Points per leaf that probe for a closed object standing on it.
@@ -96,7 +94,7 @@ std::vector<double> pooled_bias(const ClusterHierarchy& h, std::span<const doubl
 std::vector<double> reach_targets(const ClusterHierarchy& h) {
     const std::size_t n = h.leaves.size();
     std::vector<double> links;
-    gather_leaves(h, std::vector<double>(n, 1.0), links);
+    gather_channel(h, std::vector<double>(n, 1.0), links);
     const std::vector<double> bias = pooled_bias(h, links);
     std::vector<double> target(n, 0.0);
     for (std::size_t k = 0; k < n; ++k) {
@@ -169,7 +167,7 @@ double balance_leaves(ClusterHierarchy& h) {
     }
     double error = 0.0;
     for (int round = 0; round < kBalanceRounds; ++round) {
-        gather_leaves(h, send, rows);
+        gather_channel(h, send, rows);
         error = 0.0;
         for (std::size_t k = 0; k < n; ++k) {
             if (round > 0) error = std::max(error, std::abs(receive[k] * rows[k] - target[k]));

@@ -120,6 +120,23 @@ void gather_push(const ClusterHierarchy& h, const NodeValues& b, Irradiance& irr
     }
 }
 
+void gather_leaves(const ClusterHierarchy& h, std::span<const glm::dvec3> radiosity,
+                   std::span<glm::dvec3> irradiance, bool scaled, FlowBuffers& buffers) {
+    std::span<const glm::dvec3> sent = radiosity;
+    if (scaled) {
+        buffers.sent.resize(radiosity.size());
+        for (std::size_t k = 0; k < radiosity.size(); ++k)
+            buffers.sent[k] = static_cast<double>(h.send_scale[k]) * radiosity[k];
+        sent = buffers.sent;
+    }
+    pull(h, sent, buffers.values);
+    gather_push(h, buffers.values, buffers.irradiance);
+    for (std::size_t k = 0; k < h.leaves.size(); ++k) {
+        const double scale = scaled ? static_cast<double>(h.receive_scale[k]) : 1.0;
+        irradiance[k] = scale * buffers.irradiance.element[h.leaves[k]];
+    }
+}
+
 void spread(const ClusterHierarchy& h, std::span<const double> weights, std::span<double> out) {
     // Push, transposed: each node collects the weights of the leaves below it; a cluster by direction, as
     // its surfaces take light by their normals.

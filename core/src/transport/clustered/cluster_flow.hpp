@@ -37,6 +37,18 @@ void pull(const ClusterHierarchy& h, std::span<const glm::dvec3> leaf_values, No
 // (each surface taking it by its orientation), an element's to its quarters. Leaves' values are final.
 void gather_push(const ClusterHierarchy& h, const NodeValues& b, Irradiance& irradiance);
 
+// What a gather through the hierarchy works in, kept between calls to save allocations.
+struct FlowBuffers {
+    std::vector<glm::dvec3> sent;
+    NodeValues values;
+    Irradiance irradiance;
+};
+
+// The leaves' gather, irradiance[k] = Σ_j T_kj radiosity[j] over pull, links and push; `scaled`, with each
+// leaf's send and receive scales (balance_leaves) applied, as ClusteredTransport gathers.
+void gather_leaves(const ClusterHierarchy& h, std::span<const glm::dvec3> radiosity,
+                   std::span<glm::dvec3> irradiance, bool scaled, FlowBuffers& buffers);
+
 // The transpose of pull, links and push: for weights w per leaf (h.leaves order), out[k] = Σ_r w_r T_rk,
 // where T is the leaves' gather (irradiance at leaf r per unit radiosity of leaf k). With w = A the area,
 // out[k] / A_k is the share of leaf k's light that arrives somewhere.

@@ -62,12 +62,6 @@ double projected_area(const std::array<double, 6>& facing, const glm::dvec3& d) 
            std::abs(d.z) * facing[d.z >= 0.0 ? 4 : 5];
 }
 
-double summary_cosine(const glm::dvec3& n, const glm::dvec3& d) {
-    double c = 0.0;
-    for (int a = 0; a < 3; ++a) c += std::abs(d[a]) * std::max(0.0, d[a] >= 0.0 ? n[a] : -n[a]);
-    return c;
-}
-
 double transfer_factor(const NodeShape& receiver, const NodeShape& source) {
     if (!receiver.cluster) return link_factor(receiver, source, false);
     NodeShape facing = receiver;

@@ -51,10 +51,6 @@ double transfer_factor(const NodeShape& receiver, const NodeShape& source);
 // not: near and adjacent elements, which a row of the leaves' gather is mostly made of.
 double element_factor(const ElementTree& tree, std::uint32_t receiver, std::uint32_t source);
 
-// The cosine of a surface of normal n towards d as the clusters' six-direction summary reads it:
-// Σ_axis |d_axis| max(0, sign(d_axis) n_axis). Summed over a cluster's surfaces it is projected_area.
-double summary_cosine(const glm::dvec3& n, const glm::dvec3& d);
-
 // A point on the node's surfaces and that surface's normal: for an element, area-uniform; for a cluster, on
 // its surfaces by their projected area towards the unit direction `towards` (a base patch so chosen, then
 // an area-uniform point on it).

@@ -18,6 +18,7 @@
 #include "transport/clustered/cluster_flow.hpp"
 #include "transport/clustered/cluster_geometry.hpp"
 #include "transport/clustered/clustered_refine.hpp"
+#include "transport/patch_materials.hpp"
 #include "transport/refinement_settings.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 #include "transport/uniform/form_factors_memory.hpp"
@@ -80,23 +81,18 @@ constexpr double kFirstRoundTolerance = 4.0;
 // Jacobi steps of the rough solution between the rounds.
 constexpr int kRoughSteps = 24;
 
-// A few Jacobi steps over the links as they stand, then the luminance of every node.
+// A few Jacobi steps over the links as they stand (unbalanced), then the luminance of every node.
 RadiosityEstimate rough_solution(const ClusterHierarchy& h) {
     const std::size_t n = h.leaves.size();
-    std::vector<glm::dvec3> b(n), sent(n);
+    std::vector<glm::dvec3> b(n), gathered(n);
     for (std::size_t k = 0; k < n; ++k) b[k] = h.emission[h.leaves[k]];
-    NodeValues values;
-    Irradiance irradiance;
+    FlowBuffers buffers;
     for (int step = 0; step < kRoughSteps; ++step) {
-        for (std::size_t k = 0; k < n; ++k) sent[k] = static_cast<double>(h.send_scale[k]) * b[k];
-        pull(h, sent, values);
-        gather_push(h, values, irradiance);
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::uint32_t e = h.leaves[k];
-            b[k] = h.emission[e] +
-                   h.reflectance[e] * (static_cast<double>(h.receive_scale[k]) * irradiance.element[e]);
-        }
+        gather_leaves(h, b, gathered, false, buffers);
+        for (std::size_t k = 0; k < n; ++k)
+            b[k] = h.emission[h.leaves[k]] + h.reflectance[h.leaves[k]] * gathered[k];
     }
+    NodeValues& values = buffers.values;
     pull(h, b, values);
     RadiosityEstimate estimate;
     estimate.element.resize(values.element.size());
@@ -157,16 +153,8 @@ void ClusteredTransport::gather(std::span<const glm::dvec3> radiosity,
                                 std::span<glm::dvec3> irradiance) const {
     const ClusterHierarchy& h = *hierarchy_;
     // Kept between calls on this thread: a solver steps on one thread.
-    thread_local std::vector<glm::dvec3> sent;
-    thread_local NodeValues b;
-    thread_local Irradiance gathered;
-    sent.resize(h.leaves.size());
-    for (std::size_t k = 0; k < h.leaves.size(); ++k)
-        sent[k] = static_cast<double>(h.send_scale[k]) * radiosity[k];
-    pull(h, sent, b);
-    gather_push(h, b, gathered);
-    for (std::size_t k = 0; k < h.leaves.size(); ++k)
-        irradiance[k] = static_cast<double>(h.receive_scale[k]) * gathered.element[h.leaves[k]];
+    thread_local FlowBuffers buffers;
+    gather_leaves(h, radiosity, irradiance, true, buffers);
 }
 
 std::vector<double> ClusteredTransport::reach() const {
@@ -208,11 +196,7 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
     const Stopwatch clock;
     auto h = std::make_unique<ClusterHierarchy>(base);
     h->isotropic = options.isotropic_clusters;
-    for (const Patch& p : base.patches) {
-        const Material& material = scene.surfaces[p.surface].material;
-        h->reflectance.push_back(material.reflectance);
-        h->emission.push_back(material.emitted_radiosity());
-    }
+    append_patch_materials(scene, base, h->reflectance, h->emission);
     ClusteredReport report;
     report.base_patches = base.size();
     report.min_patch_size =
@@ -231,11 +215,7 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
         if (progress) progress->begin("sorting the links", 0);
         index_links(*h);
         h->leaves = h->tree.leaves();
-        if (!estimate) {  // the first guess: its links as they stand are close enough
-            h->receive_scale.assign(h->leaves.size(), 1.0f);
-            h->send_scale.assign(h->leaves.size(), 1.0f);
-            return;
-        }
+        if (!estimate) return;  // the first guess: its links as they stand are close enough
         if (progress) progress->begin("reach of the leaves", 0);
         measure_reach(*h, rays, offset, contact, options.seed);
         if (progress) progress->begin("balancing the leaves' energy", 0);

@@ -11,6 +11,7 @@
 #include "ray/coverage.hpp"
 #include "transport/hierarchical/hierarchical_first_links.hpp"
 #include "transport/hierarchical/hierarchical_refine.hpp"
+#include "transport/patch_materials.hpp"
 #include "transport/refinement_settings.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 #include "transport/uniform/form_factors_memory.hpp"
@@ -109,11 +110,7 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
     const std::size_t budget = memory_budget_bytes(o.max_memory_bytes);
     const FirstLinks first_links = count_first_links(base, o, budget, progress);
     auto system = std::make_unique<HierarchicalSystem>(base);
-    for (const Patch& p : base.patches) {
-        const Material& material = scene.surfaces[p.surface].material;
-        system->reflectance.push_back(material.reflectance);
-        system->emission.push_back(material.emitted_radiosity());
-    }
+    append_patch_materials(scene, base, system->reflectance, system->emission);
     HierarchicalReport report;
     report.base_patches = base.size();
     report.first_links = first_links.total;
