@@ -7,6 +7,7 @@
 
 #include "rad/scene/builtin_scenes.hpp"
 #include "rad/transport/scene_transport.hpp"
+#include "transport/clustered/cluster_balance.hpp"
 #include "transport/clustered/cluster_flow.hpp"
 
 namespace rad {
@@ -98,6 +99,28 @@ INSTANTIATE_TEST_SUITE_P(Clusters, ClusterFlow, ::testing::Bool(),
                          [](const ::testing::TestParamInfo<bool>& info) {
                              return info.param ? "isotropic" : "oriented";
                          });
+
+// Links that all but miss the leaves (here every factor divided by 10¹²) would ask for scales of 10¹², and
+// a real model's slivers for more, up to overflow: the scales stop at kMaxLeafScale, and the gather stays
+// finite.
+TEST(ClusterBalance, ScalesStayBoundedWhereTheLinksMissTheLeaves) {
+    const Cornell cornell(false);
+    ClusterHierarchy h = dynamic_cast<const ClusteredTransport&>(*cornell.built.transport).hierarchy();
+    for (ClusterLink& link : h.links) link.factor *= 1e-12f;
+    balance_leaves(h);
+    const auto largest = [](const std::vector<float>& scales) {
+        float worst = 0.0f;
+        for (const float s : scales) worst = std::isfinite(s) ? std::max(worst, s) : INFINITY;
+        return worst;
+    };
+    EXPECT_LE(largest(h.receive_scale), kMaxLeafScale);
+    EXPECT_LE(largest(h.send_scale), kMaxLeafScale);
+    EXPECT_EQ(largest(h.receive_scale), static_cast<float>(kMaxLeafScale));  // the bound was needed
+    std::vector<glm::dvec3> ones(h.leaves.size(), glm::dvec3(1.0)), gathered(h.leaves.size());
+    FlowBuffers buffers;
+    gather_leaves(h, ones, gathered, true, buffers);
+    for (const glm::dvec3& g : gathered) ASSERT_TRUE(std::isfinite(g.x) && g.x >= 0.0);
+}
 
 }  // namespace
 }  // namespace rad

@@ -21,6 +21,11 @@ namespace {
 constexpr int kBalanceRounds = 40;
 constexpr double kBalanceError = 5e-4;
 
+// wanted / has, at most kMaxLeafScale; 0 where the leaf has nothing to scale.
+double bounded_scale(double wanted, double has) {
+    return has > 0.0 ? std::min(kMaxLeafScale, wanted / has) : 0.0;
+}
+
 // Σ_k T_rk v_k for every leaf r (the unscaled gather, one channel).
 void gather_channel(const ClusterHierarchy& h, std::span<const double> v, std::vector<double>& out) {
     std::vector<glm::dvec3> values(v.size()), gathered(v.size());
@@ -170,14 +175,15 @@ double balance_leaves(ClusterHierarchy& h) {
         gather_channel(h, send, rows);
         error = 0.0;
         for (std::size_t k = 0; k < n; ++k) {
-            if (round > 0) error = std::max(error, std::abs(receive[k] * rows[k] - target[k]));
-            receive[k] = rows[k] > 0.0 ? target[k] / rows[k] : 0.0;
+            if (round > 0 && receive[k] < kMaxLeafScale)
+                error = std::max(error, std::abs(receive[k] * rows[k] - target[k]));
+            receive[k] = bounded_scale(target[k], rows[k]);
         }
         if (round > 0 && error < kBalanceError) break;
         for (std::size_t k = 0; k < n; ++k) weights[k] = area[k] * receive[k];
         spread(h, weights, columns);
         for (std::size_t k = 0; k < n; ++k)
-            send[k] = columns[k] > 0.0 ? target[k] * area[k] / columns[k] : 0.0;
+            send[k] = bounded_scale(target[k] * area[k], columns[k]);
     }
     h.receive_scale.assign(receive.begin(), receive.end());
     h.send_scale.assign(send.begin(), send.end());

@@ -11,6 +11,12 @@ namespace rad {
 // Rays per leaf that measure its form factor to the whole scene.
 inline constexpr std::size_t kReachRays = 64;
 
+// The most a leaf's gather or its light is scaled by. A leaf that its links hardly reach (a sliver of a face
+// that its ancestors' and clusters' links, pushed down, all but miss; the underside of a model lying just
+// above a floor the probes find covered) would otherwise take a scale without bound, up to overflow: it
+// keeps this much and the rest of its imbalance.
+inline constexpr double kMaxLeafScale = 64.0;
+
 // h.reach: per leaf, the share of cosine-weighted rays that meet the front of a surface; h.exposed, the
 // share that is not covered. A surface lying on another face to face (a box's bottom on a floor) is covered
 // there: rays that meet the other within `contact`, head on, are covered, and do not reach.
@@ -25,7 +31,8 @@ double exposed_area(const ClusterHierarchy& h, std::size_t leaf);
 // somewhere of its own light, per unit of exposed area) both equal to the reach of its exposed part: light
 // then leaves each leaf in the amount it arrives, and emitted = absorbed + escaped holds. The target is the
 // links' own row sum moved towards the measured reach by what exceeds twice the measurement's standard error,
-// so a closed scene's leaves (no ray escapes, no noise) gather exactly 1. Returns the largest row error left.
+// so a closed scene's leaves (no ray escapes, no noise) gather exactly 1. Both scales are at most
+// kMaxLeafScale. Returns the largest row error left among the leaves whose scale is not at that bound.
 double balance_leaves(ClusterHierarchy& h);
 
 }  // namespace rad
