@@ -182,8 +182,7 @@ double balance_leaves(ClusterHierarchy& h) {
         if (round > 0 && error < kBalanceError) break;
         for (std::size_t k = 0; k < n; ++k) weights[k] = area[k] * receive[k];
         spread(h, weights, columns);
-        for (std::size_t k = 0; k < n; ++k)
-            send[k] = bounded_scale(target[k] * area[k], columns[k]);
+        for (std::size_t k = 0; k < n; ++k) send[k] = bounded_scale(target[k] * area[k], columns[k]);
     }
     h.receive_scale.assign(receive.begin(), receive.end());
     h.send_scale.assign(send.begin(), send.end());
