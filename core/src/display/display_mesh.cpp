@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <stdexcept>
@@ -12,6 +13,10 @@
 namespace rad {
 
 namespace {
+
+// How far beyond the range of its patches a vertex's reconstructed radiosity may go, as a share of that
+// range.
+constexpr double kReconstructionMargin = 1.0;
 
 void add_triangles(const PatchMesh& mesh, std::size_t q, const std::uint32_t* vertex, DisplayMesh& display) {
     const auto patch = static_cast<std::uint32_t>(q);
@@ -210,12 +215,20 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
         throw std::invalid_argument("vertex_radiance: the radiosity does not have one entry per patch");
     }
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
-        glm::dvec3 sum(0.0);
+        glm::dvec3 sum(0.0), low(std::numeric_limits<double>::infinity()), high(0.0);
         for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
-            sum += static_cast<double>(display.weight[k]) * radiosity[display.weight_patch[k]];
+            const glm::dvec3& b = radiosity[display.weight_patch[k]];
+            sum += static_cast<double>(display.weight[k]) * b;
+            low = glm::min(low, b);
+            high = glm::max(high, b);
         }
-        // Extrapolation can undershoot beside a sharp shadow edge; light is never negative.
-        radiance[v] = glm::vec3(glm::max(sum, glm::dvec3(0.0)) / std::numbers::pi);
+        // Extrapolation overshoots beside a sharp edge in the light, and without bound where a patch's
+        // neighbours lie nearly in a line (small elements beside large ones): the vertex keeps within the
+        // range of the patches it is made from, widened by that range so a linear field's border vertices
+        // (half a patch or more beyond the last centroid, at a T-vertex) stay exact. Light is never negative.
+        const glm::dvec3 margin = kReconstructionMargin * (high - low);
+        sum = glm::clamp(sum, glm::max(low - margin, glm::dvec3(0.0)), high + margin);
+        radiance[v] = glm::vec3(sum / std::numbers::pi);
     }
 }
 

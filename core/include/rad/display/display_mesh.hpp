@@ -24,7 +24,9 @@ enum class ColourMode { smooth, flat };
 //          inside, which brightens concave edges and blurs shadow edges.
 // linear:  each patch's value extrapolated to the vertex along the patch's least-squares gradient (from
 //          its neighbours on the same smooth surface), then area-weighted; exact for a linear field at
-//          every vertex, borders included. Negative results are shown as 0.
+//          every vertex, borders included. A vertex keeps within the range of the patches it is made from,
+//          widened by that range: where a patch's neighbours lie nearly in a line its gradient is huge, and
+//          unlimited it would show bright and dark artifacts. Negative results are shown as 0.
 enum class Reconstruction { average, linear };
 
 struct DisplayOptions {

@@ -179,7 +179,8 @@ double balance_leaves(ClusterHierarchy& h) {
                 error = std::max(error, std::abs(receive[k] * rows[k] - target[k]));
             receive[k] = bounded_scale(target[k], rows[k]);
         }
-        if (round > 0 && error < kBalanceError) break;
+        // The rows are scaled last: no leaf then gathers more than its target, converged or not.
+        if ((round > 0 && error < kBalanceError) || round + 1 == kBalanceRounds) break;
         for (std::size_t k = 0; k < n; ++k) weights[k] = area[k] * receive[k];
         spread(h, weights, columns);
         for (std::size_t k = 0; k < n; ++k) send[k] = bounded_scale(target[k] * area[k], columns[k]);
