@@ -215,6 +215,10 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
         throw std::invalid_argument("vertex_radiance: the radiosity does not have one entry per patch");
     }
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
+        if (display.weight_begin[v] == display.weight_begin[v + 1]) {
+            radiance[v] = glm::vec3(0.0f);  // no patch: no light (and no range to keep within)
+            continue;
+        }
         glm::dvec3 sum(0.0), low(std::numeric_limits<double>::infinity()), high(0.0);
         for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
             const glm::dvec3& b = radiosity[display.weight_patch[k]];
