@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <vector>
 
 #include "transport/clustered/cluster_geometry.hpp"
@@ -234,8 +235,23 @@ class Refiner {
                                   ? transfer_factor(receiver, source)
                                   : element_factor(h_.tree, ClusterNode::index(r), ClusterNode::index(s));
         if (!(factor > 0.0)) return link;
-        link.factor = static_cast<float>(factor * visibility(r, s, towards, buffer, blocked));
+        const double open = visibility(r, s, towards, buffer, blocked);
+        const bool cluster = receiver.cluster || source.cluster;
+        const double kernel = cluster ? kernel_ratio(buffer, distance, source.area) : 1.0;
+        link.factor = static_cast<float>(factor * kernel * open);
         return link;
+    }
+
+    // A cluster's transfer takes the kernel 1 / (π d² + A_s) at the centres' distance; its mean over the
+    // two nodes' points is larger (1 / d² is convex), the more so the nearer the two. The
+    // shadow rays' end points give that mean: this is its ratio to the centres' value.
+    static double kernel_ratio(std::span<const Ray> rays, double distance, double source_area) {
+        if (rays.empty()) return 1.0;
+        const double centre = std::numbers::pi * distance * distance + source_area;
+        double sum = 0.0;
+        for (const Ray& ray : rays)
+            sum += centre / (std::numbers::pi * glm::dot(ray.direction, ray.direction) + source_area);
+        return sum / static_cast<double>(rays.size());
     }
 
     // The share of shadow rays between random points of the two that nothing blocks (the rays are left in
