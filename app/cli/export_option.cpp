@@ -17,6 +17,21 @@ void add_exposure_option(CLI::App& command, double& exposure, const std::string&
         ->capture_default_str();
 }
 
+void add_exposure_option(CLI::App& command, Exposure& exposure, const std::string& help) {
+    const CLI::Validator ev = finite_range(-kLargestExposure, kLargestExposure);
+    command
+        .add_option_function<std::string>(
+            "--exposure",
+            [&exposure](const std::string& value) {
+                exposure.automatic = value == "auto";
+                if (!exposure.automatic) exposure.ev = std::stod(value);
+            },
+            help)
+        ->check(CLI::Validator(
+            [ev](std::string& value) { return value == "auto" ? std::string() : ev(value); }, "auto|EV"))
+        ->default_str("auto");
+}
+
 void add_export_option(CLI::App& command, std::vector<std::string>& paths) {
     command
         .add_option("--export", paths,

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/exposure.hpp"
+
 namespace rad {
 
 class RadiosityPipeline;
@@ -17,6 +19,9 @@ constexpr double kLargestExposure = 100.0;
 
 // --exposure EV: a number in [-100, 100], so 2^exposure stays a finite float. `help` says what it affects.
 void add_exposure_option(CLI::App& command, double& exposure, const std::string& help);
+
+// --exposure auto|EV, auto by default.
+void add_exposure_option(CLI::App& command, Exposure& exposure, const std::string& help);
 
 // Refuses an unknown extension or a missing folder with an InputError naming --export, before long work.
 void check_export_paths(const std::vector<std::string>& paths);

@@ -21,9 +21,11 @@
 #include "gl/scene_image_renderer.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
 #include "rad/camera/camera_view.hpp"
+#include "rad/display/auto_exposure.hpp"
 #include "rad/io/image_file.hpp"
 #include "rad/io/saved_solution.hpp"
 #include "rad/util/error.hpp"
+#include "rad/util/file_names.hpp"
 #include "rad/util/stopwatch.hpp"
 
 namespace rad {
@@ -38,7 +40,7 @@ struct RenderOptions {
     std::vector<std::string> cameras;  // "ex,ey,ez,tx,ty,tz[,ux,uy,uz]" each; none: the scene's camera
     std::string cameras_file;          // one camera per line
     double fov = 0.0;                  // 0: the camera's own
-    double exposure = 0.0;
+    Exposure exposure;
     std::vector<std::string> exports;
     bool flat = false;
     bool outline = false;
@@ -184,10 +186,13 @@ int run_render(RenderOptions options, const CLI::App& command) {
     const Stopwatch render_clock;
     const HeadlessContext context(options.gl_platform);
     const SceneImageRenderer renderer(*pipeline, options.outline);
-    // Each image is written as soon as it is drawn, so many cameras never hold many images.
+    // Each image is written as soon as it is drawn, so many cameras never hold many images. Exports take
+    // the first image's exposure.
+    std::vector<double> exposures(cameras.size(), 0.0);
     for (std::size_t k = 0; k < cameras.size(); ++k) {
-        write_image(image_path(options.out, k, cameras.size()),
-                    renderer.render(cameras[k], options.width, options.height), options.exposure);
+        const Image image = renderer.render(cameras[k], options.width, options.height);
+        exposures[k] = options.exposure.for_image(auto_exposure(image));
+        write_image(image_path(options.out, k, cameras.size()), image, exposures[k]);
     }
     const double render_seconds = render_clock.seconds();
 
@@ -207,11 +212,15 @@ int run_render(RenderOptions options, const CLI::App& command) {
             pipeline->patches().size(), method.c_str(), report.step, report.residual, s.mesh, s.form_factors,
             s.solve, render_seconds, context.description().c_str());
     }
+    const bool png = lowercase_extension(options.out) == ".png";
     for (std::size_t k = 0; k < cameras.size(); ++k) {
-        std::printf("wrote %s (%dx%d)\n", image_path(options.out, k, cameras.size()).c_str(), options.width,
+        std::printf("wrote %s (%dx%d", image_path(options.out, k, cameras.size()).c_str(), options.width,
                     options.height);
+        if (png)
+            std::printf(", exposure %+.2f EV%s", exposures[k], options.exposure.automatic ? " auto" : "");
+        std::printf(")\n");
     }
-    write_exports(options.exports, *pipeline, options.exposure, std::cout);
+    write_exports(options.exports, *pipeline, exposures.front(), std::cout);
     return 0;
 }
 
@@ -245,7 +254,8 @@ CommandRunner add_render_command(CLI::App& app) {
     render->add_option("--fov", options->fov, "Vertical field of view in degrees (default: the camera's own)")
         ->check(finite_range(1.0, 179.0));
     add_exposure_option(*render, options->exposure,
-                        "PNG and --export colours: multiply radiance by 2^EXPOSURE (before sRGB)");
+                        "PNG and --export colours: radiance x 2^EV before sRGB; auto (the default) picks the "
+                        "EV that maps the image's log-average luminance to 0.18 grey");
     add_export_option(*render, options->exports);
     render->add_flag("--flat", options->flat, "Show each patch's own radiosity instead of interpolating");
     render->add_flag("--outline", options->outline, "Draw the patches' edges");

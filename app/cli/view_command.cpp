@@ -25,9 +25,9 @@ void add_viewer_options(CLI::App& command, ViewerOptions& options) {
     command.add_option("--height", options.height, "Window height in pixels")
         ->check(CLI::Range(1, kMaxWindowSide))
         ->capture_default_str();
-    command.add_option("--exposure", options.exposure, "Show radiance × 2^EXPOSURE (as render's PNGs)")
-        ->check(finite_range(-kLargestExposure, kLargestExposure))
-        ->capture_default_str();
+    add_exposure_option(command, options.exposure,
+                        "Show radiance x 2^EV; auto (the default), as render's PNGs: the EV that maps the "
+                        "view's log-average luminance to 0.18 grey, metered as the view changes");
     command.add_option("--steps", options.steps, "Script: take N solver steps after the form factors")
         ->check(CLI::Range(0, 1000000));
     command.add_option("--screenshot", options.screenshot,

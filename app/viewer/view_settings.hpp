@@ -9,6 +9,7 @@ namespace rad {
 // How the render thread draws what the worker computed; changed from the panel and the keyboard.
 struct ViewSettings {
     double exposure = 0.0;      // the image shows L · 2^exposure
+    bool auto_exposure = true;  // exposure metered from the view (auto_exposure)
     bool outline = false;       // patch edges over the patches
     bool bounce_only = false;   // one bounce alone instead of the cumulative solution
     bool newest_bounce = true;  // bounce_only shows the newest step's light, else `bounce`'s

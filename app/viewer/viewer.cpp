@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "rad/camera/camera_view.hpp"
+#include "rad/display/auto_exposure.hpp"
 #include "rad/io/image_file.hpp"
 #include "viewer/window_screenshot.hpp"
 
@@ -39,7 +40,8 @@ Viewer::Viewer(const ViewerOptions& options)
       imgui_(window_.handle()),
       panel_(options.pipeline),
       worker_(options.pipeline) {
-    view_.exposure = options.exposure;
+    view_.auto_exposure = options.exposure.automatic;
+    view_.exposure = options.exposure.ev;
     view_.mode = options.pipeline.display.mode;
     if (options.steps > 0) worker_.request_steps(static_cast<std::size_t>(options.steps));
 }
@@ -175,12 +177,32 @@ void Viewer::draw_scene(const Framebuffer& framebuffer) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         return;
     }
+    const double aspect = double(framebuffer.width) / double(framebuffer.height);
+    const glm::mat4 projection = view_projection(camera_->camera(), aspect, geometry_->bounds);
+    if (view_.auto_exposure) {
+        meter_exposure(projection);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, framebuffer.width, framebuffer.height);
+    }
     DrawOptions draw;
     draw.exposure_scale = static_cast<float>(std::exp2(view_.exposure));
     draw.encode_srgb = true;
     draw.outline = view_.outline;
-    const double aspect = double(framebuffer.width) / double(framebuffer.height);
-    renderer_.draw(view_projection(camera_->camera(), aspect, geometry_->bounds), draw);
+    renderer_.draw(projection, draw);
+}
+
+// The meter's image: small, as the geometric mean needs no detail; the window's projection stretched to it
+// shows the same scene.
+constexpr int kMeterSide = 64;
+
+void Viewer::meter_exposure(const glm::mat4& view_projection) {
+    if (meter_ && view_projection == metered_view_ && renderer_.colour_uploads() == metered_colours_) return;
+    if (!meter_) meter_ = std::make_unique<OffscreenTarget>(kMeterSide, kMeterSide, 1, PixelFormat::radiance);
+    meter_->bind();
+    renderer_.draw(view_projection, DrawOptions{});
+    view_.exposure = auto_exposure(Image{kMeterSide, kMeterSide, meter_->read_pixels()});
+    metered_view_ = view_projection;
+    metered_colours_ = renderer_.colour_uploads();
 }
 
 std::optional<std::string> Viewer::save_screenshot(const std::string& path, const Framebuffer& framebuffer) {

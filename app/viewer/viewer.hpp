@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "gl/offscreen_target.hpp"
 #include "gl/renderer.hpp"
 #include "rad/camera/fly_camera.hpp"
 #include "viewer/camera_input.hpp"
@@ -39,6 +40,9 @@ class Viewer {
     ViewerRadiance::Colours colours_to_show() const;
     void handle_window_events(const WindowEvents& events, PanelRequests& requests);
     void draw_scene(const Framebuffer& framebuffer);
+    // Auto exposure: the view drawn small in radiance and metered (auto_exposure), again whenever the view
+    // or the colours change.
+    void meter_exposure(const glm::mat4& view_projection);
     std::optional<std::string> save_screenshot(const std::string& path, const Framebuffer& framebuffer);
     // Scripted runs: once the worker has taken the steps asked for, writes the screenshot and ends.
     void advance_script(const SolverSnapshot& snapshot, bool worker_busy, const Framebuffer& framebuffer);
@@ -56,6 +60,9 @@ class Viewer {
     std::shared_ptr<const ViewerRadiance> radiance_;
     ViewerRadiance::Colours shown_colours_;  // what the renderer's colour buffer holds
     std::uint64_t scene_version_ = 0;
+    std::unique_ptr<OffscreenTarget> meter_;
+    glm::mat4 metered_view_{0.0f};
+    std::size_t metered_colours_ = 0;  // the renderer's colour uploads when last metered
     int exit_status_ = 0;
     bool script_done_ = false;
     SolverWorker worker_;  // last: its thread stops and joins before the context goes

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "pipeline/exposure.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
 
 namespace rad {
@@ -11,7 +12,7 @@ struct ViewerOptions {
     PipelineOptions pipeline;
     int width = 1280;
     int height = 800;
-    double exposure = 0.0;  // the image shows L · 2^exposure, as `render` PNGs do
+    Exposure exposure;  // as `render` PNGs take it
     // Scripted run: take `steps` solver steps (after the form factors), then write `screenshot` (if given)
     // and close when `exit` is set. steps < 0: no script.
     int steps = -1;

@@ -158,8 +158,14 @@ void ViewerPanel::draw_solver(SolverWorker& worker, const SolverSnapshot& snapsh
 }
 
 void ViewerPanel::draw_view(SolverWorker& worker, ViewSettings& view, PanelRequests& requests) {
+    // The slider shows the metered value while auto is on; moving it fixes the exposure there.
     float exposure = static_cast<float>(view.exposure);
-    if (ImGui::SliderFloat("exposure", &exposure, -8.0f, 8.0f, "%.1f")) view.exposure = exposure;
+    if (ImGui::SliderFloat("exposure", &exposure, -8.0f, 8.0f, "%.1f")) {
+        view.exposure = exposure;
+        view.auto_exposure = false;
+    }
+    ImGui::SameLine();
+    ImGui::Checkbox("auto", &view.auto_exposure);
     draw_bounce_choice(worker, view);
     int mode = view.mode == ColourMode::flat ? 1 : 0;
     const bool smooth_clicked = ImGui::RadioButton("smooth", &mode, 0);

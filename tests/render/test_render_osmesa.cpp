@@ -10,8 +10,10 @@
 namespace rad {
 namespace {
 
-const std::vector<std::string> kCornell256 = {"render", "builtin:cornell", "--patch-size", "70", "--width",
-                                              "256",    "--height",        "256"};
+// The golden image is at exposure 0, as auto exposure has its own tests (test_render_auto_exposure.cpp).
+const std::vector<std::string> kCornell256 = {
+    "render", "builtin:cornell", "--patch-size", "70",         "--width",
+    "256",    "--height",        "256",          "--exposure", "0"};
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
     args.insert(args.end(), more.begin(), more.end());

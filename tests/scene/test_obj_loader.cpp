@@ -1,6 +1,8 @@
 // The OBJ + MTL loader: what it makes of good files, and a one-line error naming file and line for bad ones.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "expect_input_error.hpp"
 #include "rad/scene/scene_loader.hpp"
 #include "rad/util/error.hpp"
@@ -128,7 +130,8 @@ TEST(ObjLoader, BadInputNamesFileAndLine) {
                      {"b.obj:4:", "vertex index 9 is out of range"});
     expect_obj_error(dir.write("c.obj", "v 0 0 0\nv nan 0 0\n"), {"c.obj:2:", "not a finite number"});
     expect_obj_error(dir.write("d.obj", "v 0 0 0\nv 1 0 inf\n"), {"d.obj:2:", "not a finite number"});
-    expect_obj_error(dir.write("e.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"), {"e.obj:3:", "at least 3 corners"});
+    // A face of two corners is skipped; with nothing else, nothing is left.
+    expect_obj_error(dir.write("e.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"), {"e.obj", "no faces"});
     expect_obj_error(dir.write("f.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n"), {"f.obj:4:", "index 0"});
     expect_obj_error(dir.write("g.obj", "v 0 0\n"), {"g.obj:1:", "needs 3 to 7 numbers"});
     expect_obj_error(dir.write("h.obj", std::string("v 0 0 0\n\x7f\x45\x4c\x46\0\0junk", 19)),
@@ -158,8 +161,8 @@ TEST(ObjLoader, BadInputNamesFileAndLine) {
 TEST(ObjLoader, BadMaterialsNameTheMtlLine) {
     TempDir dir;
     const std::string geometry = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n";
-    dir.write("m.mtl", "newmtl x\nKd 1.0 0.5 0.5\n");
-    expect_obj_error(dir.write("k.obj", geometry), {"m.mtl:2:", "reflectance (Kd) '1.0' must lie in [0, 1)"});
+    dir.write("m.mtl", "newmtl x\nKd inf 0.5 0.5\n");
+    expect_obj_error(dir.write("k.obj", geometry), {"m.mtl:2:", "reflectance (Kd) 'inf' must be finite"});
     dir.write("m.mtl", "newmtl x\nKd 0.5 0.5 0.5\nKe 1 -2 0\n");
     expect_obj_error(dir.write("l.obj", geometry), {"m.mtl:3:", "emission (Ke) '-2'"});
     dir.write("m.mtl", "newmtl x\nKd 0.5 nan 0.5\n");
@@ -167,7 +170,78 @@ TEST(ObjLoader, BadMaterialsNameTheMtlLine) {
     dir.write("m.mtl", "newmtl x\nKe 1 1\n");
     expect_obj_error(dir.write("o.obj", geometry), {"m.mtl:2:", "three numbers"});
     dir.write("m.mtl", "newmtl x\nKd -0.1 0 0\n");
-    expect_obj_error(dir.write("p.obj", geometry), {"m.mtl:2:", "[0, 1)"});
+    expect_obj_error(dir.write("p.obj", geometry), {"m.mtl:2:", "'-0.1' must be finite and not negative"});
+}
+
+const std::string* warning_with(const Scene& scene, const std::string& text) {
+    for (const std::string& w : scene.warnings)
+        if (w.find(text) != std::string::npos) return &w;
+    return nullptr;
+}
+
+// What real files get wrong without being broken: white as Kd 1, faces of two corners, the same face twice,
+// transparency. Each loads, with one warning per kind that counts it.
+TEST(ObjLoader, SloppyFilesLoadWithOneWarningPerKind) {
+    TempDir dir;
+    dir.write(
+        "m.mtl",
+        "newmtl white\nKd 1 1 1\nnewmtl pink\nKd 1.0 0.5 0.5\nd 0.4\nnewmtl glass\nKd 0.2 0.2 0.2\nTr 0.9\n");
+    const std::string obj = dir.write("s.obj",
+                                      "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\n"
+                                      "o a\nusemtl white\nf 1 2 3 4\nf 1 2\nf 3\nf 2 3 4 1\n"
+                                      "o b\nusemtl pink\nf 1 2 5\nf 5 1 2\nusemtl glass\nf 1 5 4\nf 4 5 1\n");
+    const Scene scene = load_obj(obj);
+    ASSERT_EQ(scene.surfaces.size(), 3u);
+    expect_rgb(find_surface(scene, "a")->material.reflectance, glm::dvec3(kMaxReflectance));
+    expect_rgb(find_surface(scene, "b/pink")->material.reflectance, glm::dvec3(kMaxReflectance, 0.5, 0.5));
+    EXPECT_EQ(find_surface(scene, "a")->mesh.n_faces(), 1u);  // its repeat (another first corner) dropped
+    EXPECT_EQ(find_surface(scene, "b/pink")->mesh.n_faces(), 1u);   // likewise
+    EXPECT_EQ(find_surface(scene, "b/glass")->mesh.n_faces(), 2u);  // back to back: both kept
+    ASSERT_EQ(scene.warnings.size(), 5u);
+    EXPECT_TRUE(warning_with(scene, "no material emits light"));
+    EXPECT_TRUE(
+        warning_with(scene, "2 material(s) reflect 1 or more (largest 1, first 'white'); clamped to 0.99"));
+    EXPECT_TRUE(warning_with(scene, "2 material(s) are partly transparent (d < 1, first 'pink')"));
+    EXPECT_TRUE(warning_with(scene, "skipped 2 face(s) of fewer than 3 corners"));
+    EXPECT_TRUE(warning_with(scene, "dropped 2 duplicate face(s)"));
+}
+
+// A positive index may name a vertex, texture coordinate or normal defined further down, as tinyobjloader
+// resolves it; a negative one counts back from the line it is on.
+TEST(ObjLoader, ForwardReferencesResolveAgainstTheWholeFile) {
+    TempDir dir;
+    const Scene scene =
+        load_obj(dir.write("f.obj", "v 0 0 0\nf 1/1 2/2 3/3\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"));
+    ASSERT_EQ(scene.surfaces.size(), 1u);
+    EXPECT_DOUBLE_EQ(surface_area(scene.surfaces[0].mesh), 0.5);
+    expect_obj_error(dir.write("g.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\n"),
+                     {"g.obj:2:", "vertex index 3 is out of range (2 in the file)"});
+    expect_obj_error(dir.write("h.obj", "v 0 0 0\nf 1 -2 3\nv 1 0 0\nv 0 1 0\n"),
+                     {"h.obj:2:", "vertex index -2 is out of range (1 defined so far)"});
+}
+
+// tinyobjloader keeps a face's corner count in a byte: a disk of 256 or 300 corners (as CAD exporters write
+// them) must keep all of them, and the faces after it their own.
+TEST(ObjLoader, FacesOfMoreThan255CornersKeepEveryCorner) {
+    for (const int n : {255, 256, 300}) {
+        SCOPED_TRACE(n);
+        TempDir dir;
+        std::string text;
+        for (int k = 0; k < n; ++k) {
+            const double a = 2.0 * 3.141592653589793 * k / n;
+            text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+        }
+        text += "v 3 0 0\nv 4 0 0\nv 4 1 0\nf";
+        for (int k = 1; k <= n; ++k) text += " " + std::to_string(k);
+        text +=
+            "\nf " + std::to_string(n + 1) + " " + std::to_string(n + 2) + " " + std::to_string(n + 3) + "\n";
+        const Scene scene = load_obj(dir.write("disk.obj", text));
+        ASSERT_EQ(scene.surfaces.size(), 1u);
+        EXPECT_FALSE(warning_with(scene, "dropped"));
+        // The polygon's area, n/2 sin(2π/n), plus the triangle's 1/2 (coordinates written to 6 decimals).
+        const double disk = 0.5 * n * std::sin(2.0 * 3.141592653589793 / n);
+        EXPECT_NEAR(surface_area(scene.surfaces[0].mesh), disk + 0.5, 1e-5);
+    }
 }
 
 TEST(ObjLoader, CommandLineExitsWithStatus2AndOneLine) {

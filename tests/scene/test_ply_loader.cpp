@@ -35,6 +35,27 @@ TEST(PlyLoader, FaceColoursBecomeOneSurfacePerColour) {
     EXPECT_DOUBLE_EQ(total_area(scene), 1.0);
 }
 
+// White is 255 (or a float colour of 1.0): clamped to kMaxReflectance, counted once per colour in one
+// warning.
+TEST(PlyLoader, WhiteIsClampedWithOneWarning) {
+    TempDir dir;
+    const Scene scene =
+        load_ply(dir.write("w.ply", kFaceColourHeader + kSquare + "3 0 1 2 255 255 255\n3 0 2 3 255 0 0\n"));
+    ASSERT_EQ(scene.surfaces.size(), 2u);
+    EXPECT_EQ(scene.surfaces[0].material.reflectance, glm::dvec3(kMaxReflectance));
+    EXPECT_EQ(scene.surfaces[1].material.reflectance, glm::dvec3(kMaxReflectance, 0.0, 0.0));
+    ASSERT_EQ(scene.warnings.size(), 2u);  // and that nothing emits
+    EXPECT_NE(scene.warnings[0].find("w.ply: 2 material(s) reflect 1 or more"), std::string::npos)
+        << scene.warnings[0];
+    const std::string floats =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nproperty float red\nproperty float green\n"
+        "property float blue\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 1.0 1.0 0.5\n";
+    const Scene lit = load_ply(dir.write("f.ply", floats));
+    EXPECT_EQ(lit.surfaces.at(0).material.reflectance.x, kMaxReflectance);
+    EXPECT_NE(lit.warnings.at(0).find("1 material(s) reflect 1 or more"), std::string::npos);
+}
+
 TEST(PlyLoader, VertexColoursAreAveragedPerFace) {
     TempDir dir;
     const std::string path = dir.write(
@@ -108,8 +129,6 @@ TEST(PlyLoader, BadInputIsRefusedWithFileAndLine) {
                      {"g.ply", "ends before face 1"});
     expect_ply_error(dir.write("h.ply", kFaceColourHeader + kSquare + "3 0 1 2 1 1 1 1\n" + good_faces),
                      {"h.ply:17:", "more values"});
-    expect_ply_error(dir.write("i.ply", kFaceColourHeader + kSquare + "3 0 1 2 255 0 0\n3 0 2 3 1 1 1\n"),
-                     {"i.ply: face 0", "reflectance"});
 }
 
 // OpenMesh skips a face it cannot add but still stores its colour out of bounds (found by fuzz_ply).

@@ -80,5 +80,52 @@ TEST(ViewerWindow, ScreenshotsAfterOneAndThreeBouncesDifferWhereIndirectLightRea
     EXPECT_DOUBLE_EQ(mean_brightness(one, kLamp), mean_brightness(three, kLamp));
 }
 
+// Auto exposure, the default: a closed furnace of uniform radiance L = 2 Le = 500, far beyond white at
+// exposure 0, shows 0.18 grey (sRGB code 118) where the cube's far walls fill the view; --exposure 0 shows
+// it white.
+TEST(ViewerWindow, AutoExposureShowsABrightFurnaceAsMiddleGrey) {
+    const std::string xvfb_run = test::find_in_path("xvfb-run");
+    ASSERT_FALSE(xvfb_run.empty()) << "xvfb-run not found: scripts/install-deps.sh installs xvfb";
+    const test::TempDir folder;
+    folder.write("furnace.mtl", "newmtl glow\nKd 0.5 0.5 0.5\nKe 250 250 250\n");
+    const std::string scene =
+        folder.write("furnace.obj",
+                     "mtllib furnace.mtl\nusemtl glow\n"
+                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                     "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 4 3 7 8\nf 1 4 8 5\nf 2 6 7 3\n");
+    auto shot = [&](const std::string& name, std::vector<std::string> more) {
+        const std::string path = (folder.path() / name).string();
+        std::vector<std::string> args{"-a",
+                                      "-s",
+                                      "-screen 0 1024x768x24",
+                                      RAD_BINARY,
+                                      "view",
+                                      scene,
+                                      "--patch-size",
+                                      "0.5",
+                                      "--width",
+                                      std::to_string(kWidth),
+                                      "--height",
+                                      std::to_string(kHeight),
+                                      "--steps",
+                                      "40",
+                                      "--screenshot",
+                                      path,
+                                      "--exit"};
+        args.insert(args.end(), more.begin(), more.end());
+        const test::CommandResult result = test::run_program(xvfb_run, args);
+        EXPECT_EQ(result.status, 0) << result.err;
+        return std::filesystem::exists(path) ? read_image(path) : Image{};
+    };
+    // The middle of the window: the walls seen from the default camera, which frames the cube from outside.
+    constexpr Region kRight{0.40, 0.60, 0.40, 0.60};
+    const Image automatic = shot("auto.png", {});
+    ASSERT_EQ(automatic.width, kWidth);
+    EXPECT_NEAR(mean_brightness(automatic, kRight), 118.0 / 255.0, 2.0 / 255.0);
+    const Image fixed = shot("fixed.png", {"--exposure", "0"});
+    ASSERT_EQ(fixed.width, kWidth);
+    EXPECT_GT(mean_brightness(fixed, kRight), 0.99);
+}
+
 }  // namespace
 }  // namespace rad

@@ -1,5 +1,6 @@
 #include "rad/scene/material.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -35,6 +36,35 @@ void validate_material(const Material& material, const std::string& where) {
                              " must be finite and not negative");
         }
     }
+}
+
+bool clamp_reflectance(Material& material) {
+    bool clamped = false;
+    for (int c = 0; c < 3; ++c) {
+        if (material.reflectance[c] >= 1.0) {
+            material.reflectance[c] = kMaxReflectance;
+            clamped = true;
+        }
+    }
+    return clamped;
+}
+
+void ReflectanceClamps::clamp(Material& material) {
+    const double largest = std::max({material.reflectance.x, material.reflectance.y, material.reflectance.z});
+    if (!clamp_reflectance(material)) return;
+    largest_ = std::max(largest_, largest);
+    if (std::find(names_.begin(), names_.end(), material.name) == names_.end())
+        names_.push_back(material.name);
+}
+
+std::string ReflectanceClamps::warning(const std::string& source) const {
+    if (names_.empty()) return {};
+    std::ostringstream out;
+    out << source << ": " << names_.size() << " material(s) reflect 1 or more (largest " << largest_
+        << ", first '" << names_.front() << "'); clamped to " << kMaxReflectance
+        << ", as a surface reflecting all light would make the light grow without end";
+    if (largest_ > 2.0) out << " (were colours written from 0 to 255?)";
+    return out.str();
 }
 
 }  // namespace rad

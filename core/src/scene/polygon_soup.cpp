@@ -1,6 +1,7 @@
 #include "rad/scene/polygon_soup.hpp"
 
 #include <OpenMesh/Core/System/omstream.hh>
+#include <algorithm>
 #include <glm/geometric.hpp>
 #include <optional>
 #include <unordered_map>
@@ -76,6 +77,50 @@ std::vector<glm::dvec3> corner_positions(const PolygonSoup& soup, const std::vec
     return out;
 }
 
+// A polygon's corners from its lexicographically smallest position on, in its winding: two polygons with
+// the same corners in the same turning order have the same key, whatever corner they start from.
+std::vector<glm::dvec3> rotated_to_smallest(std::vector<glm::dvec3> points) {
+    const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
+        return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+    };
+    std::rotate(points.begin(), std::min_element(points.begin(), points.end(), less), points.end());
+    return points;
+}
+
+std::size_t hash_points(const std::vector<glm::dvec3>& points) {
+    std::size_t h = points.size();
+    for (const glm::dvec3& p : points)
+        for (int c = 0; c < 3; ++c) h = h * 0x100000001b3ull ^ std::hash<double>{}(p[c] + 0.0);
+    return h;
+}
+
+// Remembers the polygons seen by a hash of their keys; a repeat (same corners, same winding, any first
+// corner) is a duplicate face, which would otherwise put its surface's light in twice. Back-to-back faces
+// (opposite windings) are not repeats.
+class DuplicateFaces {
+  public:
+    explicit DuplicateFaces(const PolygonSoup& soup) : soup_(soup) {}
+
+    bool seen_before(std::size_t polygon, const std::vector<glm::dvec3>& points) {
+        const std::vector<glm::dvec3> key = rotated_to_smallest(points);
+        const std::size_t h = hash_points(key);
+        auto [first, last] = seen_.equal_range(h);
+        for (auto it = first; it != last; ++it)
+            if (key_of(it->second) == key) return true;
+        seen_.emplace(h, polygon);
+        return false;
+    }
+
+  private:
+    std::vector<glm::dvec3> key_of(std::size_t polygon) const {
+        return rotated_to_smallest(
+            corner_positions(soup_, without_repeats(soup_, soup_.polygons[polygon].vertices)));
+    }
+
+    const PolygonSoup& soup_;
+    std::unordered_multimap<std::size_t, std::size_t> seen_;  // key hash -> polygon
+};
+
 double scene_size_squared(const PolygonSoup& soup) {
     BoundingBox box;
     for (const auto& p : soup.positions) box.extend(p);
@@ -91,13 +136,19 @@ Scene build_scene(const PolygonSoup& input) {
     const PolygonSoup& soup = lifted ? *lifted : input;
     const double min_area = kZeroAreaFraction * scene_size_squared(soup);
     std::vector<SurfaceBuilder> builders(soup.groups.size(), SurfaceBuilder(soup));
-    std::size_t dropped = 0;
+    std::size_t dropped = 0, duplicates = 0;
+    DuplicateFaces seen(soup);
 
-    for (const PolygonSoup::Polygon& polygon : soup.polygons) {
+    for (std::size_t index = 0; index < soup.polygons.size(); ++index) {
+        const PolygonSoup::Polygon& polygon = soup.polygons[index];
         const std::vector<std::uint32_t> corners = without_repeats(soup, polygon.vertices);
         const std::vector<glm::dvec3> points = corner_positions(soup, corners);
         if (corners.size() < 3 || !(polygon_area(points) > min_area)) {
             ++dropped;
+            continue;
+        }
+        if (seen.seen_before(index, points)) {
+            ++duplicates;
             continue;
         }
         SurfaceBuilder& builder = builders[polygon.group];
@@ -120,6 +171,11 @@ Scene build_scene(const PolygonSoup& input) {
     if (dropped > 0) {
         scene.warnings.push_back(soup.source + ": dropped " + std::to_string(dropped) +
                                  " face(s) with zero area or fewer than three distinct corners");
+    }
+    if (duplicates > 0) {
+        scene.warnings.push_back(
+            soup.source + ": dropped " + std::to_string(duplicates) +
+            " duplicate face(s) (the same corners as an earlier face, in the same order)");
     }
     scene.warnings.insert(scene.warnings.end(), lift_warnings.begin(), lift_warnings.end());
     if (scene.surfaces.empty()) throw InputError(soup.source + ": the scene has no faces with area");

@@ -3,6 +3,7 @@
 #include <glm/vec3.hpp>
 #include <numbers>
 #include <string>
+#include <vector>
 
 namespace rad {
 
@@ -23,5 +24,26 @@ Material default_material();
 // Throws InputError, prefixed by `where` (a file and line, say), when reflectance is outside [0, 1) or
 // emission is negative, NaN or infinite.
 void validate_material(const Material& material, const std::string& where);
+
+// What a reflectance of 1 or more in a file becomes. Real files write white as `Kd 1` (or a colour of 255),
+// but a surface that reflects all light makes a closed scene's light grow without end.
+inline constexpr double kMaxReflectance = 0.99;
+
+// Sets every reflectance channel at or above 1 to kMaxReflectance; returns whether any was. Values that are
+// negative or not numbers are left for validate_material to refuse.
+bool clamp_reflectance(Material& material);
+
+// Counts the materials a loader clamped, for one warning naming the count and the largest value.
+class ReflectanceClamps {
+  public:
+    // Clamps `material` and counts it once per name.
+    void clamp(Material& material);
+    // Empty when nothing was clamped.
+    std::string warning(const std::string& source) const;
+
+  private:
+    std::vector<std::string> names_;
+    double largest_ = 0.0;
+};
 
 }  // namespace rad

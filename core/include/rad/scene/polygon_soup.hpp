@@ -29,7 +29,8 @@ struct PolygonSoup {
     std::vector<Group> groups;
 };
 
-// One surface per group that has faces. Zero-area polygons are dropped (and counted in a warning); polygons
+// One surface per group that has faces. Zero-area polygons and repeats of an earlier polygon (the same
+// corners in the same winding) are dropped, each kind counted in a warning; polygons
 // that are not planar and convex are triangulated; an edge that OpenMesh cannot take (non-manifold) gets
 // its own copy of the vertices. An emitting polygon that lies in the plane of a non-emitting one, facing the
 // same way and overlapping it, is moved a thousandth of the scene's diagonal in front of it, with a warning

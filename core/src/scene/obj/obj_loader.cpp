@@ -81,14 +81,28 @@ std::string first_line(const std::string& text) {
     return text.substr(0, text.find('\n'));
 }
 
-Material to_material(const tinyobj::material_t& m, const MaterialLibraries& libs) {
+Material to_material(const tinyobj::material_t& m, const MaterialLibraries& libs, ReflectanceClamps& clamps) {
     Material material;
     material.name = m.name;
     material.reflectance = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
     material.emission = {m.emission[0], m.emission[1], m.emission[2]};
+    clamps.clamp(material);
     const auto where = libs.defined_at.find(m.name);
     validate_material(material, where != libs.defined_at.end() ? where->second : "material library");
     return material;
+}
+
+// Transparency (`d` below 1, or `Tr` above 0) is not modelled: such surfaces stay opaque.
+std::string transparency_warning(const std::string& path, const std::vector<tinyobj::material_t>& materials) {
+    std::size_t count = 0;
+    std::string first;
+    for (const tinyobj::material_t& m : materials) {
+        if (!(m.dissolve < 1.0f)) continue;
+        if (count++ == 0) first = m.name;
+    }
+    if (count == 0) return {};
+    return path + ": " + std::to_string(count) + " material(s) are partly transparent (d < 1, first '" +
+           first + "'); transparency is not modelled, so they are opaque";
 }
 
 // One group per (shape, material) pair: `usemtl` runs within an object become surfaces of their own.
@@ -117,7 +131,7 @@ class GroupTable {
     std::map<std::pair<std::size_t, int>, std::uint32_t> index_;
 };
 
-PolygonSoup to_soup(const std::string& path, const tinyobj::ObjReader& reader,
+PolygonSoup to_soup(const std::string& path, const tinyobj::ObjReader& reader, const ObjFacts& facts,
                     const std::vector<Material>& materials, std::vector<std::string>& warnings) {
     PolygonSoup soup;
     soup.source = path;
@@ -127,20 +141,30 @@ PolygonSoup to_soup(const std::string& path, const tinyobj::ObjReader& reader,
     GroupTable groups(soup, materials);
     std::size_t without_material = 0;
     const auto& shapes = reader.GetShapes();
+    std::size_t face = 0;  // in the file's order, which the shapes keep
     for (std::size_t s = 0; s < shapes.size(); ++s) {
         const tinyobj::mesh_t& mesh = shapes[s].mesh;
         std::size_t offset = 0;
-        for (std::size_t f = 0; f < mesh.num_face_vertices.size(); ++f) {
+        for (std::size_t f = 0; f < mesh.num_face_vertices.size(); ++f, ++face) {
+            // tinyobjloader's count is the true one modulo 256.
+            const std::size_t corners = face < facts.face_corners.size() ? facts.face_corners[face] : 0;
+            if (corners % 256 != mesh.num_face_vertices[f] || offset + corners > mesh.indices.size())
+                throw InputError(path + ": face " + std::to_string(face + 1) +
+                                 " reads differently from its check; the file is not understood");
             const int material_id = f < mesh.material_ids.size() ? mesh.material_ids[f] : -1;
             if (material_id < 0) ++without_material;
             PolygonSoup::Polygon polygon;
             polygon.group = groups.group(shapes[s], s, material_id);
-            for (std::size_t k = 0; k < mesh.num_face_vertices[f]; ++k) {
+            for (std::size_t k = 0; k < corners; ++k) {
                 polygon.vertices.push_back(static_cast<std::uint32_t>(mesh.indices[offset + k].vertex_index));
             }
-            offset += mesh.num_face_vertices[f];
+            offset += corners;
             soup.polygons.push_back(std::move(polygon));
         }
+    }
+    if (facts.short_faces > 0) {
+        warnings.push_back(path + ": skipped " + std::to_string(facts.short_faces) +
+                           " face(s) of fewer than 3 corners");
     }
     if (without_material > 0) {
         warnings.push_back(path + ": " + std::to_string(without_material) +
@@ -166,9 +190,13 @@ Scene load_obj(const std::string& path) {
         throw InputError(path + ": " + first_line(reader.Error()));
     }
     std::vector<Material> materials;
-    for (const auto& m : reader.GetMaterials()) materials.push_back(to_material(m, libs));
+    ReflectanceClamps clamps;
+    for (const auto& m : reader.GetMaterials()) materials.push_back(to_material(m, libs, clamps));
+    if (const std::string w = clamps.warning(path); !w.empty()) warnings.push_back(w);
+    if (const std::string w = transparency_warning(path, reader.GetMaterials()); !w.empty())
+        warnings.push_back(w);
 
-    Scene scene = build_scene(to_soup(path, reader, materials, warnings));
+    Scene scene = build_scene(to_soup(path, reader, facts, materials, warnings));
     scene.warnings.insert(scene.warnings.begin(), warnings.begin(), warnings.end());
     return scene;
 }

@@ -77,21 +77,41 @@ void check_numbers(const LineReader& reader, const std::vector<std::string_view>
     }
 }
 
-// One index of a face corner ("3", "-1"), resolved against the count defined so far.
-void check_index(const LineReader& reader, std::string_view word, std::size_t defined, const char* kind) {
+// One index of a face corner ("3", "-1"). A negative index counts back from the last one defined so far; a
+// positive one may refer to a later line, as tinyobjloader resolves it against the whole file.
+void check_index(const LineReader& reader, std::string_view word, std::size_t defined, std::size_t total,
+                 const char* kind) {
     long long index = 0;
     if (!parse_integer(word, index))
         reader.fail("malformed " + std::string(kind) + " index " + quote_for_message(word));
-    const long long resolved = index < 0 ? static_cast<long long>(defined) + index : index - 1;
-    if (index == 0 || resolved < 0 || resolved >= static_cast<long long>(defined)) {
+    if (index < 0 && static_cast<long long>(defined) + index < 0) {
         reader.fail(std::string(kind) + " index " + std::to_string(index) + " is out of range (" +
                     std::to_string(defined) + " defined so far)");
+    }
+    if (index == 0 || index > static_cast<long long>(total)) {
+        reader.fail(std::string(kind) + " index " + std::to_string(index) + " is out of range (" +
+                    std::to_string(total) + " in the file)");
     }
 }
 
 struct ObjCounts {
     std::size_t v = 0, vt = 0, vn = 0, corners = 0;
 };
+
+// How many vertices, texture coordinates and normals the whole file defines, for its forward references.
+ObjCounts count_definitions(std::string_view text, const std::string& path) {
+    ObjCounts totals;
+    LineReader reader(text, path);
+    std::string_view line;
+    while (reader.next(line)) {
+        const std::vector<std::string_view> words = split_words(line);
+        if (words.empty()) continue;
+        if (words[0] == "v") ++totals.v;
+        if (words[0] == "vt") ++totals.vt;
+        if (words[0] == "vn") ++totals.vn;
+    }
+    return totals;
+}
 
 // Counts one more of `kind` and refuses the line that goes beyond `limit`, before tinyobjloader allocates.
 void count_one(const LineReader& reader, std::size_t& count, std::size_t limit, const char* kind,
@@ -116,10 +136,10 @@ void add_libraries(const LineReader& reader, const std::vector<std::string_view>
     }
 }
 
-void check_face(const LineReader& reader, const std::vector<std::string_view>& words,
-                const ObjCounts& counts) {
-    if (words.size() < 4)
-        reader.fail("a face needs at least 3 corners, found " + std::to_string(words.size() - 1));
+// A face of fewer than 3 corners ("f 1 2", as some exporters write) is no error: tinyobjloader skips it and
+// the loader counts it in a warning. Its indices must still exist.
+void check_face(const LineReader& reader, const std::vector<std::string_view>& words, const ObjCounts& counts,
+                const ObjCounts& totals) {
     if (words.size() - 1 > kMaxFaceCorners) {
         reader.fail("a face with " + std::to_string(words.size() - 1) + " corners; the limit is " +
                     std::to_string(kMaxFaceCorners));
@@ -128,15 +148,15 @@ void check_face(const LineReader& reader, const std::vector<std::string_view>& w
         const std::string_view corner = words[i];
         const std::size_t s1 = corner.find('/');
         const std::size_t s2 = s1 == std::string_view::npos ? s1 : corner.find('/', s1 + 1);
-        check_index(reader, corner.substr(0, s1), counts.v, "vertex");
+        check_index(reader, corner.substr(0, s1), counts.v, totals.v, "vertex");
         if (s1 == std::string_view::npos) continue;
         const std::string_view vt = corner.substr(s1 + 1, s2 == std::string_view::npos ? s2 : s2 - s1 - 1);
-        if (!vt.empty()) check_index(reader, vt, counts.vt, "texture coordinate");
+        if (!vt.empty()) check_index(reader, vt, counts.vt, totals.vt, "texture coordinate");
         if (s2 == std::string_view::npos) continue;
         const std::string_view vn = corner.substr(s2 + 1);
         if (vn.find('/') != std::string_view::npos)
             reader.fail("malformed face corner " + quote_for_message(corner));
-        if (!vn.empty()) check_index(reader, vn, counts.vn, "normal");
+        if (!vn.empty()) check_index(reader, vn, counts.vn, totals.vn, "normal");
     }
 }
 
@@ -145,6 +165,7 @@ void check_face(const LineReader& reader, const std::vector<std::string_view>& w
 ObjFacts check_obj_text(std::string_view text, const std::string& path, const SceneFileLimits& limits) {
     ObjFacts facts;
     ObjCounts counts;
+    const ObjCounts totals = count_definitions(text, path);
     LineReader reader(text, path);
     std::string_view line;
     while (reader.next(line)) {
@@ -163,9 +184,14 @@ ObjFacts check_obj_text(std::string_view text, const std::string& path, const Sc
         } else if (key == "f") {
             const std::vector<std::string_view> corners =
                 split_whitespace(line);  // tinyobjloader reads past '#'
-            check_face(reader, corners, counts);
+            check_face(reader, corners, counts, totals);
             count_one(reader, facts.face_count, limits.faces, "faces");
             count_one(reader, counts.corners, limits.face_corners, "face corners", corners.size() - 1);
+            if (corners.size() - 1 < 3) {
+                ++facts.short_faces;
+            } else {
+                facts.face_corners.push_back(static_cast<std::uint32_t>(corners.size() - 1));
+            }
         } else if (key == "mtllib") {
             add_libraries(reader, words, facts);
         } else if (key == "usemtl") {
@@ -194,8 +220,10 @@ std::map<std::string, std::size_t> check_mtl_text(std::string_view text, const s
             if (words.size() != 4) reader.fail("'" + std::string(key) + "' needs three numbers: r g b");
             for (std::size_t i = 1; i < 4; ++i) {
                 const double value = number_at(reader, words[i]);
-                if (key == "Kd" && !(value >= 0.0 && value < 1.0)) {
-                    reader.fail("reflectance (Kd) " + quote_for_message(words[i]) + " must lie in [0, 1)");
+                // 1 and above are clamped later (ReflectanceClamps): files write white as Kd 1.
+                if (key == "Kd" && !(std::isfinite(value) && value >= 0.0)) {
+                    reader.fail("reflectance (Kd) " + quote_for_message(words[i]) +
+                                " must be finite and not negative");
                 }
                 if (key == "Ke" && !(std::isfinite(value) && value >= 0.0)) {
                     reader.fail("emission (Ke) " + quote_for_message(words[i]) +

@@ -63,7 +63,8 @@ OpenMesh::Vec3f face_colour(const PlyMesh& mesh, PlyMesh::FaceHandle f, bool fac
 }
 
 // Faces of one colour become one surface whose reflectance is that colour.
-PolygonSoup to_soup(const std::string& path, const PlyMesh& mesh, bool face_colors, bool vertex_colors) {
+PolygonSoup to_soup(const std::string& path, const PlyMesh& mesh, bool face_colors, bool vertex_colors,
+                    ReflectanceClamps& clamps) {
     PolygonSoup soup;
     soup.source = path;
     for (auto v : mesh.vertices()) {
@@ -91,6 +92,7 @@ PolygonSoup to_soup(const std::string& path, const PlyMesh& mesh, bool face_colo
                 m.name = "colour " + std::to_string(key[0]) + " " + std::to_string(key[1]) + " " +
                          std::to_string(key[2]);
                 m.reflectance = glm::dvec3(key[0], key[1], key[2]) / 255.0;
+                clamps.clamp(m);  // white is 255, or a float colour of 1
                 validate_material(m, path + ": face " + std::to_string(f.idx()));
                 soup.groups.push_back({m.name, m});
             }
@@ -108,7 +110,10 @@ Scene load_ply(const std::string& path) {
     bool face_colors = false;
     bool vertex_colors = false;
     const PlyMesh mesh = read_ply_mesh(path, face_colors, vertex_colors);
-    Scene scene = build_scene(to_soup(path, mesh, face_colors, vertex_colors));
+    ReflectanceClamps clamps;
+    Scene scene = build_scene(to_soup(path, mesh, face_colors, vertex_colors, clamps));
+    if (const std::string w = clamps.warning(path); !w.empty())
+        scene.warnings.insert(scene.warnings.begin(), w);
     if (!face_colors && !vertex_colors) {
         scene.warnings.insert(scene.warnings.begin(),
                               path + ": no colours; every face uses the default material (reflectance 0.5)");
