@@ -196,6 +196,11 @@ void Viewer::draw_scene(const Framebuffer& framebuffer) {
 constexpr int kMeterSide = 64;
 
 void Viewer::meter_exposure(const glm::mat4& view_projection) {
+    // The emission alone (before the first bounce, while form factors compute) would meter the lights
+    // themselves to grey: the exposure stays as it was until reflected light is shown.
+    if (!radiance_) return;
+    const std::size_t shown = view_.bounce_only && !view_.newest_bounce ? view_.bounce : radiance_->step;
+    if (shown == 0) return;
     if (meter_ && view_projection == metered_view_ && renderer_.colour_uploads() == metered_colours_) return;
     if (!meter_) meter_ = std::make_unique<OffscreenTarget>(kMeterSide, kMeterSide, 1, PixelFormat::radiance);
     meter_->bind();
