@@ -179,11 +179,7 @@ void Viewer::draw_scene(const Framebuffer& framebuffer) {
     }
     const double aspect = double(framebuffer.width) / double(framebuffer.height);
     const glm::mat4 projection = view_projection(camera_->camera(), aspect, geometry_->bounds);
-    if (view_.auto_exposure) {
-        meter_exposure(projection);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, framebuffer.width, framebuffer.height);
-    }
+    if (view_.auto_exposure) meter_exposure(projection, framebuffer);
     DrawOptions draw;
     draw.exposure_scale = static_cast<float>(std::exp2(view_.exposure));
     draw.encode_srgb = true;
@@ -195,7 +191,7 @@ void Viewer::draw_scene(const Framebuffer& framebuffer) {
 // shows the same scene.
 constexpr int kMeterSide = 64;
 
-void Viewer::meter_exposure(const glm::mat4& view_projection) {
+void Viewer::meter_exposure(const glm::mat4& view_projection, const Framebuffer& window) {
     // The emission alone (before the first bounce, while form factors compute) would meter the lights
     // themselves to grey: the exposure stays as it was until reflected light is shown.
     if (!radiance_) return;
@@ -208,6 +204,8 @@ void Viewer::meter_exposure(const glm::mat4& view_projection) {
     view_.exposure = auto_exposure(Image{kMeterSide, kMeterSide, meter_->read_pixels()});
     metered_view_ = view_projection;
     metered_colours_ = renderer_.colour_uploads();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, window.width, window.height);
 }
 
 std::optional<std::string> Viewer::save_screenshot(const std::string& path, const Framebuffer& framebuffer) {

@@ -41,8 +41,8 @@ class Viewer {
     void handle_window_events(const WindowEvents& events, PanelRequests& requests);
     void draw_scene(const Framebuffer& framebuffer);
     // Auto exposure: the view drawn small in radiance and metered (auto_exposure), again whenever the view
-    // or the colours change.
-    void meter_exposure(const glm::mat4& view_projection);
+    // or the colours change; leaves the window's framebuffer bound.
+    void meter_exposure(const glm::mat4& view_projection, const Framebuffer& window);
     std::optional<std::string> save_screenshot(const std::string& path, const Framebuffer& framebuffer);
     // Scripted runs: once the worker has taken the steps asked for, writes the screenshot and ends.
     void advance_script(const SolverSnapshot& snapshot, bool worker_busy, const Framebuffer& framebuffer);

@@ -206,6 +206,17 @@ TEST(ObjLoader, SloppyFilesLoadWithOneWarningPerKind) {
     EXPECT_TRUE(warning_with(scene, "dropped 2 duplicate face(s)"));
 }
 
+// A reflectance far above 1 looks like colours written from 0 to 255: the warning says so.
+TEST(ObjLoader, ReflectanceOf255AsksAboutTheScale) {
+    TempDir dir;
+    dir.write("m.mtl", "newmtl orange\nKd 255 128 0\n");
+    const Scene scene =
+        load_obj(dir.write("o.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl orange\nf 1 2 3\n"));
+    expect_rgb(scene.surfaces.at(0).material.reflectance, glm::dvec3(kMaxReflectance, kMaxReflectance, 0.0));
+    EXPECT_TRUE(warning_with(scene, "(largest 255, first 'orange'); clamped to 0.99"));
+    EXPECT_TRUE(warning_with(scene, "(were colours written from 0 to 255?)"));
+}
+
 // A positive index may name a vertex, texture coordinate or normal defined further down, as tinyobjloader
 // resolves it; a negative one counts back from the line it is on.
 TEST(ObjLoader, ForwardReferencesResolveAgainstTheWholeFile) {

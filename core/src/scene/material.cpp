@@ -38,20 +38,11 @@ void validate_material(const Material& material, const std::string& where) {
     }
 }
 
-bool clamp_reflectance(Material& material) {
-    bool clamped = false;
-    for (int c = 0; c < 3; ++c) {
-        if (material.reflectance[c] >= 1.0) {
-            material.reflectance[c] = kMaxReflectance;
-            clamped = true;
-        }
-    }
-    return clamped;
-}
-
 void ReflectanceClamps::clamp(Material& material) {
     const double largest = std::max({material.reflectance.x, material.reflectance.y, material.reflectance.z});
-    if (!clamp_reflectance(material)) return;
+    if (!(largest >= 1.0)) return;
+    for (int c = 0; c < 3; ++c)
+        if (material.reflectance[c] >= 1.0) material.reflectance[c] = kMaxReflectance;
     largest_ = std::max(largest_, largest);
     if (std::find(names_.begin(), names_.end(), material.name) == names_.end())
         names_.push_back(material.name);

@@ -29,14 +29,11 @@ void validate_material(const Material& material, const std::string& where);
 // but a surface that reflects all light makes a closed scene's light grow without end.
 inline constexpr double kMaxReflectance = 0.99;
 
-// Sets every reflectance channel at or above 1 to kMaxReflectance; returns whether any was. Values that are
-// negative or not numbers are left for validate_material to refuse.
-bool clamp_reflectance(Material& material);
-
 // Counts the materials a loader clamped, for one warning naming the count and the largest value.
 class ReflectanceClamps {
   public:
-    // Clamps `material` and counts it once per name.
+    // Sets every reflectance channel of `material` at or above 1 to kMaxReflectance, counting the material
+    // once per name. Values that are negative or not numbers are left for validate_material to refuse.
     void clamp(Material& material);
     // Empty when nothing was clamped.
     std::string warning(const std::string& source) const;

@@ -218,17 +218,12 @@ std::map<std::string, std::size_t> check_mtl_text(std::string_view text, const s
         } else if (key == "Kd" || key == "Ke") {
             if (!in_material) reader.fail("'" + std::string(key) + "' before any 'newmtl'");
             if (words.size() != 4) reader.fail("'" + std::string(key) + "' needs three numbers: r g b");
+            // A reflectance of 1 and above is clamped later (ReflectanceClamps): files write white as Kd 1.
+            const std::string what = key == "Kd" ? "reflectance (Kd) " : "emission (Ke) ";
             for (std::size_t i = 1; i < 4; ++i) {
                 const double value = number_at(reader, words[i]);
-                // 1 and above are clamped later (ReflectanceClamps): files write white as Kd 1.
-                if (key == "Kd" && !(std::isfinite(value) && value >= 0.0)) {
-                    reader.fail("reflectance (Kd) " + quote_for_message(words[i]) +
-                                " must be finite and not negative");
-                }
-                if (key == "Ke" && !(std::isfinite(value) && value >= 0.0)) {
-                    reader.fail("emission (Ke) " + quote_for_message(words[i]) +
-                                " must be finite and not negative");
-                }
+                if (!(std::isfinite(value) && value >= 0.0))
+                    reader.fail(what + quote_for_message(words[i]) + " must be finite and not negative");
             }
         }
     }
