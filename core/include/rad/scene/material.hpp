@@ -8,11 +8,14 @@
 namespace rad {
 
 // A diffuse material. Reflectance is the albedo ρ per RGB channel, each in [0, 1); emission is the emitted
-// radiance Le per channel (MTL `Ke`), so the emitted radiosity is E = π Le.
+// radiance Le per channel (MTL `Ke`), so the emitted radiosity is E = π Le. A one-sided material reflects and
+// emits on its front only (its back blocks light); a two-sided one (glTF `doubleSided`) on both sides, each
+// side with elements of its own.
 struct Material {
     std::string name;
     glm::dvec3 reflectance{0.5};
     glm::dvec3 emission{0.0};
+    bool two_sided = false;
 
     bool emits() const { return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0; }
     glm::dvec3 emitted_radiosity() const { return emission * std::numbers::pi; }
