@@ -5,7 +5,8 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
-"$root/scripts/build.sh"
+# Only the program: the tests and benchmarks are built by scripts/test.sh, so the first picture comes sooner.
+BUILD_TARGETS="${BUILD_TARGETS:-radiosity}" "$root/scripts/build.sh"
 radiosity="${BUILD_DIR:-$root/build}/app/radiosity"
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec "$radiosity" "$@"

@@ -180,7 +180,7 @@ const std::string* warning_with(const Scene& scene, const std::string& text) {
 }
 
 // What real files get wrong without being broken: white as Kd 1, faces of two corners, the same face twice,
-// transparency. Each loads, with one warning per kind that counts it.
+// transparency, two-sided parts as back-to-back faces. Each loads, with one warning per kind that counts it.
 TEST(ObjLoader, SloppyFilesLoadWithOneWarningPerKind) {
     TempDir dir;
     dir.write(
@@ -196,8 +196,11 @@ TEST(ObjLoader, SloppyFilesLoadWithOneWarningPerKind) {
     expect_rgb(find_surface(scene, "b/pink")->material.reflectance, glm::dvec3(kMaxReflectance, 0.5, 0.5));
     EXPECT_EQ(find_surface(scene, "a")->mesh.n_faces(), 1u);  // its repeat (another first corner) dropped
     EXPECT_EQ(find_surface(scene, "b/pink")->mesh.n_faces(), 1u);   // likewise
-    EXPECT_EQ(find_surface(scene, "b/glass")->mesh.n_faces(), 2u);  // back to back: both kept
-    ASSERT_EQ(scene.warnings.size(), 5u);
+    EXPECT_EQ(find_surface(scene, "b/glass")->mesh.n_faces(), 2u);  // back to back: both kept, two-sided
+    EXPECT_TRUE(find_surface(scene, "b/glass")->back_to_back);
+    EXPECT_FALSE(find_surface(scene, "a")->back_to_back);
+    ASSERT_EQ(scene.warnings.size(), 6u);
+    EXPECT_TRUE(warning_with(scene, "1 pair(s) of back-to-back faces"));
     EXPECT_TRUE(warning_with(scene, "no material emits light"));
     EXPECT_TRUE(
         warning_with(scene, "2 material(s) reflect 1 or more (largest 1, first 'white'); clamped to 0.99"));

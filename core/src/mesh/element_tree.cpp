@@ -10,6 +10,7 @@ namespace rad {
 ElementTree::ElementTree(const PatchMesh& base)
     : points_(base.points),
       surface_begin_(base.surface_begin),
+      back_to_back_(base.back_to_back),
       base_size_(base.size()),
       leaf_count_(base.size()) {
     if (base.size() >= Element::kNone / 8)
@@ -117,6 +118,7 @@ void ElementTree::append_edge_points(std::uint32_t a, std::uint32_t b,
 PatchMesh ElementTree::leaf_mesh(std::span<const std::uint32_t> leaves) const {
     PatchMesh mesh;
     mesh.points = points_;
+    mesh.back_to_back = back_to_back_;
     mesh.positions.reserve(points_.size());
     for (const glm::dvec3& p : points_) mesh.positions.emplace_back(p);
     mesh.corners.reserve(leaves.size());

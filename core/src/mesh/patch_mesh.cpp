@@ -296,6 +296,17 @@ double patch_size_that_fits(const Scene& scene, double patch_size, double count,
     return std::ceil(size / step) * step;
 }
 
+std::vector<std::uint8_t> back_to_back_surfaces(const Scene& scene) {
+    std::vector<std::uint8_t> flags(scene.surfaces.size(), 0);
+    bool any = false;
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        flags[s] = scene.surfaces[s].back_to_back ? 1 : 0;
+        any = any || flags[s] != 0;
+    }
+    if (!any) flags.clear();
+    return flags;
+}
+
 }  // namespace
 
 Patch measure_patch(std::span<const glm::dvec3> points, const glm::uvec4& c, std::uint32_t surface,
@@ -345,6 +356,7 @@ PatchMesh build_patches(const Scene& scene, const MeshingOptions& options) {
     }
     mesh.positions.reserve(mesh.points.size());
     for (const auto& p : mesh.points) mesh.positions.emplace_back(p);
+    mesh.back_to_back = back_to_back_surfaces(scene);
     return mesh;
 }
 

@@ -78,9 +78,27 @@ struct RayScene::Embree {
     RTCScene scene = nullptr;
     // The corners in the normalized frame; one spare element, as Embree reads the last with a 16-byte load.
     std::vector<glm::vec3> vertices;
+    // Per patch, 1 where a ray reaching its back goes on (PatchMesh::is_back_to_back); empty: none does.
+    std::vector<std::uint8_t> see_through_back;
     std::atomic<bool> failed{false};
     std::mutex mutex;
     std::string message;
+
+    // Closest-hit queries skip the back of a back-to-back patch: the other side of its two-sided surface
+    // lies in the same plane, and the ray meets that side's front there. Occlusion queries keep every hit,
+    // as a two-sided surface blocks light from both sides.
+    static void skip_back_to_back(const RTCFilterFunctionNArguments* args) {
+        const auto& embree = *static_cast<const Embree*>(args->geometryUserPtr);
+        for (unsigned i = 0; i < args->N; ++i) {
+            if (args->valid[i] != -1) continue;
+            const unsigned patch = RTCHitN_primID(args->hit, args->N, i);
+            if (embree.see_through_back[patch] == 0) continue;
+            const float facing = RTCRayN_dir_x(args->ray, args->N, i) * RTCHitN_Ng_x(args->hit, args->N, i) +
+                                 RTCRayN_dir_y(args->ray, args->N, i) * RTCHitN_Ng_y(args->hit, args->N, i) +
+                                 RTCRayN_dir_z(args->ray, args->N, i) * RTCHitN_Ng_z(args->hit, args->N, i);
+            if (facing >= 0.0f) args->valid[i] = 0;
+        }
+    }
 
     // Embree calls this from whichever thread hit the error; C code cannot carry an exception, so the first
     // message is kept and thrown by throw_if_failed() on our side of the call.
@@ -135,6 +153,12 @@ RayScene::RayScene(const PatchMesh& patches, const char* device_config)
                                sizeof(glm::vec3), e.vertices.size());
     rtcSetSharedGeometryBuffer(quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, patches.corners.data(), 0,
                                sizeof(glm::uvec4), patches.corners.size());
+    if (!patches.back_to_back.empty()) {
+        e.see_through_back.resize(patches.size());
+        for (std::size_t p = 0; p < patches.size(); ++p) e.see_through_back[p] = patches.is_back_to_back(p);
+        rtcSetGeometryUserData(quads, &e);
+        rtcSetGeometryIntersectFilterFunction(quads, &Embree::skip_back_to_back);
+    }
     rtcCommitGeometry(quads);
     rtcAttachGeometry(e.scene, quads);  // geometry ID 0: primID is the patch index
     rtcReleaseGeometry(quads);

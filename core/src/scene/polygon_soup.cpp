@@ -128,6 +128,76 @@ double scene_size_squared(const PolygonSoup& soup) {
     return d * d;
 }
 
+// A polygon of the soup that has area and repeats no earlier one.
+struct KeptPolygon {
+    std::uint32_t index = 0;  // into soup.polygons
+    bool paired = false;      // a later or earlier kept polygon is its back: the same corners, reversed
+};
+
+std::vector<glm::dvec3> polygon_points(const PolygonSoup& soup, std::uint32_t index) {
+    return corner_positions(soup, without_repeats(soup, soup.polygons[index].vertices));
+}
+
+// Pairs the kept polygons that lie back to back (a real file's way of building a two-sided part, such as a
+// lamp shade or a curtain) and returns the number of pairs.
+std::size_t pair_back_to_back(const PolygonSoup& soup, std::vector<KeptPolygon>& kept) {
+    std::unordered_multimap<std::size_t, std::size_t> by_key;  // key hash -> position in kept
+    by_key.reserve(kept.size());
+    for (std::size_t k = 0; k < kept.size(); ++k)
+        by_key.emplace(hash_points(rotated_to_smallest(polygon_points(soup, kept[k].index))), k);
+    std::size_t pairs = 0;
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+        if (kept[k].paired) continue;
+        std::vector<glm::dvec3> reversed = polygon_points(soup, kept[k].index);
+        std::reverse(reversed.begin(), reversed.end());
+        const std::vector<glm::dvec3> key = rotated_to_smallest(std::move(reversed));
+        auto [first, last] = by_key.equal_range(hash_points(key));
+        for (auto it = first; it != last; ++it) {
+            KeptPolygon& other = kept[it->second];
+            if (other.paired || it->second == k) continue;
+            if (rotated_to_smallest(polygon_points(soup, other.index)) != key) continue;
+            kept[k].paired = other.paired = true;
+            ++pairs;
+            break;
+        }
+    }
+    return pairs;
+}
+
+// The faces of one group: one-sided ones, and the two sides of its two-sided ones (faces paired back to
+// back in the file, or every face of a two-sided material, whose back this adds).
+struct GroupBuilders {
+    explicit GroupBuilders(const PolygonSoup& soup) : one_sided(soup), front(soup), back(soup) {}
+    SurfaceBuilder one_sided, front, back;
+};
+
+// Adds the polygon's faces (itself, or its triangles where it is not planar and convex) to `front` and,
+// when `back` is given, the same faces reversed to it.
+void add_polygon(const PolygonSoup& soup, const std::vector<std::uint32_t>& corners, double min_area,
+                 SurfaceBuilder& front, SurfaceBuilder* back) {
+    const auto add = [&](std::vector<std::uint32_t> face) {
+        front.add_face(face);
+        if (!back) return;
+        std::reverse(face.begin(), face.end());
+        back->add_face(face);
+    };
+    const std::vector<glm::dvec3> points = corner_positions(soup, corners);
+    if (is_planar_convex(points)) {
+        add(corners);
+        return;
+    }
+    for (const auto& t : triangulate_polygon(points)) {
+        std::vector<std::uint32_t> tri{corners[t[0]], corners[t[1]], corners[t[2]]};
+        if (polygon_area(corner_positions(soup, tri)) > min_area) add(std::move(tri));
+    }
+}
+
+void add_surface(Scene& scene, const PolygonSoup::Group& group, SurfaceBuilder& builder, bool back_to_back,
+                 const std::string& suffix) {
+    if (builder.empty()) return;
+    scene.surfaces.push_back(Surface{group.name + suffix, group.material, builder.take(), back_to_back});
+}
+
 }  // namespace
 
 Scene build_scene(const PolygonSoup& input) {
@@ -135,38 +205,42 @@ Scene build_scene(const PolygonSoup& input) {
     const std::optional<PolygonSoup> lifted = lift_coplanar_emitters(input, lift_warnings);
     const PolygonSoup& soup = lifted ? *lifted : input;
     const double min_area = kZeroAreaFraction * scene_size_squared(soup);
-    std::vector<SurfaceBuilder> builders(soup.groups.size(), SurfaceBuilder(soup));
     std::size_t dropped = 0, duplicates = 0;
     DuplicateFaces seen(soup);
+    std::vector<KeptPolygon> kept;
 
     for (std::size_t index = 0; index < soup.polygons.size(); ++index) {
-        const PolygonSoup::Polygon& polygon = soup.polygons[index];
-        const std::vector<std::uint32_t> corners = without_repeats(soup, polygon.vertices);
-        const std::vector<glm::dvec3> points = corner_positions(soup, corners);
-        if (corners.size() < 3 || !(polygon_area(points) > min_area)) {
+        const std::vector<glm::dvec3> points = polygon_points(soup, static_cast<std::uint32_t>(index));
+        if (points.size() < 3 || !(polygon_area(points) > min_area)) {
             ++dropped;
-            continue;
-        }
-        if (seen.seen_before(index, points)) {
+        } else if (seen.seen_before(index, points)) {
             ++duplicates;
-            continue;
+        } else {
+            kept.push_back({static_cast<std::uint32_t>(index)});
         }
-        SurfaceBuilder& builder = builders[polygon.group];
-        if (is_planar_convex(points)) {
-            builder.add_face(corners);
-            continue;
-        }
-        for (const auto& t : triangulate_polygon(points)) {
-            const std::vector<std::uint32_t> tri{corners[t[0]], corners[t[1]], corners[t[2]]};
-            if (polygon_area(corner_positions(soup, tri)) > min_area) builder.add_face(tri);
+    }
+    const std::size_t pairs = pair_back_to_back(soup, kept);
+
+    std::vector<GroupBuilders> builders(soup.groups.size(), GroupBuilders(soup));
+    for (const KeptPolygon& polygon : kept) {
+        const PolygonSoup::Polygon& p = soup.polygons[polygon.index];
+        GroupBuilders& group = builders[p.group];
+        const std::vector<std::uint32_t> corners = without_repeats(soup, p.vertices);
+        if (polygon.paired) {
+            add_polygon(soup, corners, min_area, group.front, nullptr);
+        } else if (soup.groups[p.group].material.two_sided) {
+            add_polygon(soup, corners, min_area, group.front, &group.back);
+        } else {
+            add_polygon(soup, corners, min_area, group.one_sided, nullptr);
         }
     }
 
     Scene scene;
     scene.source = soup.source;
     for (std::size_t g = 0; g < soup.groups.size(); ++g) {
-        if (builders[g].empty()) continue;
-        scene.surfaces.push_back(Surface{soup.groups[g].name, soup.groups[g].material, builders[g].take()});
+        add_surface(scene, soup.groups[g], builders[g].one_sided, false, "");
+        add_surface(scene, soup.groups[g], builders[g].front, true, "");
+        add_surface(scene, soup.groups[g], builders[g].back, true, " (back)");
     }
     if (dropped > 0) {
         scene.warnings.push_back(soup.source + ": dropped " + std::to_string(dropped) +
@@ -176,6 +250,11 @@ Scene build_scene(const PolygonSoup& input) {
         scene.warnings.push_back(
             soup.source + ": dropped " + std::to_string(duplicates) +
             " duplicate face(s) (the same corners as an earlier face, in the same order)");
+    }
+    if (pairs > 0) {
+        scene.warnings.push_back(soup.source + ": " + std::to_string(pairs) +
+                                 " pair(s) of back-to-back faces (the same corners in opposite orders) are "
+                                 "read as two-sided surfaces, each side lit on its own");
     }
     scene.warnings.insert(scene.warnings.end(), lift_warnings.begin(), lift_warnings.end());
     if (scene.surfaces.empty()) throw InputError(soup.source + ": the scene has no faces with area");

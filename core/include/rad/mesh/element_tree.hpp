@@ -72,6 +72,7 @@ class ElementTree {
     std::vector<Element> elements_;
     std::unordered_map<std::uint64_t, std::uint32_t> midpoints_;  // edge (two points) -> its midpoint
     std::vector<std::uint32_t> surface_begin_;
+    std::vector<std::uint8_t> back_to_back_;  // per surface, as PatchMesh::back_to_back
     std::size_t base_size_ = 0;
     std::size_t leaf_count_ = 0;
 };

@@ -39,10 +39,15 @@ struct PatchMesh {
     // corners.
     std::vector<std::uint32_t> outline_begin;
     std::vector<std::uint32_t> outline;
+    // Per surface, 1 where it is back-to-back (Surface::back_to_back); empty where every surface is one-sided.
+    std::vector<std::uint8_t> back_to_back;
 
     std::size_t size() const { return patches.size(); }
     bool is_triangle(std::size_t patch) const { return corners[patch][3] == corners[patch][2]; }
     int corner_count(std::size_t patch) const { return is_triangle(patch) ? 3 : 4; }
+    bool is_back_to_back(std::size_t patch) const {
+        return !back_to_back.empty() && back_to_back[patches[patch].surface] != 0;
+    }
 };
 
 // Area, centroid and the given normal of the planar patch with these corners (a triangle repeats c[2]).

@@ -45,7 +45,8 @@ class RayScene {
     // blocked[k] = 1 when anything, front or back, lies on rays[k] between tnear and tfar; else 0.
     void occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
 
-    // hits[k] = the first surface rays[k] meets: a patch seen from its front, kBackFace or kMissed.
+    // hits[k] = the first surface rays[k] meets: a patch seen from its front, kBackFace or kMissed. The back
+    // of a back-to-back patch (PatchMesh::is_back_to_back) is passed through: the other side's front is there.
     void intersect(std::span<const Ray> rays, std::span<RayHit> hits) const;
 
   private:

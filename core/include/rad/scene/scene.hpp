@@ -18,11 +18,14 @@ struct SurfaceMeshTraits : OpenMesh::DefaultTraits {
 // A surface's geometry: planar convex polygons, counter-clockwise seen from the lit (front) side.
 using SurfaceMesh = OpenMesh::PolyMesh_ArrayKernelT<SurfaceMeshTraits>;
 
-// A named piece of the scene with one material.
+// A named piece of the scene with one material. A back-to-back surface is one side of a two-sided surface:
+// another surface covers each of its faces with the opposite winding (the other side), so a ray that reaches
+// its back goes on to that side's front instead of being blocked.
 struct Surface {
     std::string name;
     Material material;
     SurfaceMesh mesh;
+    bool back_to_back = false;
 };
 
 // A pinhole camera; fov is the vertical field of view in degrees.
