@@ -95,7 +95,9 @@ class SceneSweep {
         : scene_(scene), plan_(plan), results_(results), log_(log) {}
 
     void run() {
-        const LoadedScene base = load_and_mesh({scene_, 0.0});
+        SceneOptions options;
+        options.scene = scene_;
+        const LoadedScene base = load_and_mesh(options);
         default_size_ = base.patch_size;
         camera_ = scene_camera(base.scene);
         reference_image_ =

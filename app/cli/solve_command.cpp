@@ -69,8 +69,14 @@ void print_summary(std::ostream& out, const RadiosityPipeline& pipeline, const S
                   static_cast<double>(stats.peak_memory_bytes) / 1e6);
     out << line;
     const auto total = [](const glm::dvec3& v) { return v.x + v.y + v.z; };
-    std::snprintf(line, sizeof line, "power (sum of channels): emitted %.6g, absorbed %.6g, escaped %.6g\n",
-                  total(stats.energy.emitted), total(stats.energy.absorbed), total(stats.energy.escaped));
+    std::snprintf(line, sizeof line, "power (sum of channels): emitted %.6g", total(stats.energy.emitted));
+    out << line;
+    if (total(stats.energy.outside) > 0.0) {
+        std::snprintf(line, sizeof line, ", from the sky and sun %.6g", total(stats.energy.outside));
+        out << line;
+    }
+    std::snprintf(line, sizeof line, ", absorbed %.6g, escaped %.6g\n", total(stats.energy.absorbed),
+                  total(stats.energy.escaped));
     out << line;
 }
 

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "cli/number_checks.hpp"
+#include "pipeline/outside_light_options.hpp"
 #include "rad/scene/scene_loader.hpp"
 
 namespace rad {
@@ -21,11 +23,27 @@ void add_scene_options(CLI::App& command, SceneOptions& options) {
         .add_option("--patch-size", options.patch_size,
                     "Largest patch edge, in scene units (default: a sixteenth of the scene's largest extent)")
         ->check(positive_number());
+    command.add_option(
+        "--sky", options.sky,
+        "Light from a sky at infinity, met by every ray that leaves the scene: R,G,B (or L) is a "
+        "uniform radiance; overcast,L (or overcast,R,G,B) the CIE overcast sky of that zenith "
+        "radiance, +y up; none");
+    command.add_option(
+        "--sun", options.sun,
+        "A distant sun with shadows: X,Y,Z,E (or X,Y,Z,R,G,B), the direction toward it and the "
+        "irradiance on a plane facing it; none");
 }
 
 LoadedScene load_scene_only(const SceneOptions& options) {
+    // The options are read first, so a mistyped one is reported before a long load.
+    const std::optional<Sky> sky = options.sky.empty() ? std::nullopt : std::optional(parse_sky(options.sky));
+    const std::optional<Sun> sun = options.sun.empty() ? std::nullopt : std::optional(parse_sun(options.sun));
     LoadedScene loaded;
     loaded.scene = load_scene(options.scene);
+    if (sky) loaded.scene.sky = *sky;
+    if (sun) loaded.scene.sun = *sun;
+    if (has_outside_light(loaded.scene))
+        std::erase(loaded.scene.warnings, no_emitter_warning(loaded.scene.source));
     for (const std::string& w : loaded.scene.warnings) std::cerr << "radiosity: warning: " << w << '\n';
     return loaded;
 }

@@ -12,6 +12,8 @@ namespace rad {
 struct SceneOptions {
     std::string scene = "builtin:cornell";
     double patch_size = 0.0;  // 0: the scene's default
+    std::string sky;  // --sky as given (parse_sky); empty: the scene's own (none unless the file has one)
+    std::string sun;  // --sun as given (parse_sun); empty: the scene's own
 };
 
 void add_scene_options(CLI::App& command, SceneOptions& options);
@@ -22,8 +24,8 @@ struct LoadedScene {
     double patch_size = 0.0;
 };
 
-// Loads and meshes the scene, printing its warnings to stderr. Without --patch-size the patch size is
-// default_scale × the scene's default. Throws InputError for bad input.
+// Loads and meshes the scene, with the sky and sun of the options, printing its warnings to stderr. Without
+// --patch-size the patch size is default_scale × the scene's default. Throws InputError for bad input.
 LoadedScene load_and_mesh(const SceneOptions& options, double default_scale = 1.0);
 
 // The two halves of load_and_mesh: the scene alone (no patches yet), then its patches.

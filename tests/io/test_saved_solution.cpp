@@ -199,7 +199,7 @@ TEST(SavedSolution, RefusesTruncatedCorruptForeignFutureAndForgedFiles) {
 
     std::string future = good;
     future[8] = static_cast<char>(kSavedSolutionVersion + 1);
-    expect_refused(future, "format version 2");
+    expect_refused(future, "format version " + std::to_string(kSavedSolutionVersion + 1));
 
     // A forged element count, sealed with a right checksum: refused before it is allocated for.
     std::string forged = good;

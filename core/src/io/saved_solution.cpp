@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <glm/geometric.hpp>
 #include <iterator>
 #include <limits>
 #include <stdexcept>
@@ -224,12 +225,18 @@ void write_scene(Writer& w, const Scene& scene) {
         w.vec(scene.camera->up);
         w.f64(scene.camera->fov_degrees);
     }
+    w.u32(static_cast<std::uint32_t>(scene.sky.kind));
+    w.vec(scene.sky.radiance);
+    w.vec(scene.sun.direction);
+    w.vec(scene.sun.irradiance);
     w.count(scene.surfaces.size());
     for (const Surface& surface : scene.surfaces) {
         w.text(surface.name);
         w.text(surface.material.name);
         w.vec(surface.material.reflectance);
         w.vec(surface.material.emission);
+        w.u8(surface.material.two_sided);
+        w.u8(surface.back_to_back);
         const SurfaceMesh& mesh = surface.mesh;
         // Compact indices, in case the mesh has deleted vertices.
         std::vector<std::uint32_t> index(mesh.n_vertices(), 0);
@@ -248,6 +255,20 @@ void write_scene(Writer& w, const Scene& scene) {
     }
 }
 
+void read_outside_light(Reader& r, Scene& scene) {
+    const std::uint32_t kind = r.u32("sky kind");
+    if (kind > static_cast<std::uint32_t>(Sky::Kind::overcast)) r.fail("sky kind " + std::to_string(kind));
+    scene.sky.kind = static_cast<Sky::Kind>(kind);
+    scene.sky.radiance = r.vec("sky radiance");
+    scene.sun.direction = r.vec("sun direction");
+    scene.sun.irradiance = r.vec("sun irradiance");
+    const auto non_negative = [](const glm::dvec3& c) { return c.x >= 0.0 && c.y >= 0.0 && c.z >= 0.0; };
+    if (!non_negative(scene.sky.radiance) || !non_negative(scene.sun.irradiance))
+        r.fail("a negative sky radiance or sun irradiance");
+    if (std::abs(glm::length(scene.sun.direction) - 1.0) > 1e-9)
+        r.fail("the sun's direction is not a unit vector");
+}
+
 Scene read_scene(Reader& r) {
     Scene scene;
     if (r.flag("camera flag")) {
@@ -260,8 +281,9 @@ Scene read_scene(Reader& r) {
             r.fail("camera field of view out of range");
         scene.camera = camera;
     }
-    // The smallest surface: two empty strings, two colours and two counts.
-    const std::size_t surfaces = r.count("surface count", 16 + 48 + 16);
+    read_outside_light(r, scene);
+    // The smallest surface: two empty strings, two colours, two flags and two counts.
+    const std::size_t surfaces = r.count("surface count", 16 + 48 + 2 + 16);
     scene.surfaces.resize(surfaces);
     for (std::size_t s = 0; s < surfaces; ++s) {
         Surface& surface = scene.surfaces[s];
@@ -269,6 +291,8 @@ Scene read_scene(Reader& r) {
         surface.material.name = r.text("material name");
         surface.material.reflectance = r.vec("reflectance");
         surface.material.emission = r.vec("emission");
+        surface.material.two_sided = r.flag("two-sided flag");
+        surface.back_to_back = r.flag("back-to-back flag");
         try {
             validate_material(surface.material, "surface " + std::to_string(s));
         } catch (const InputError& e) {
@@ -461,6 +485,7 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
     saved.scene = read_scene(r);
     saved.scene.source = saved.settings.scene_source;
     saved.patches = read_patches(r, n, saved.scene.surfaces.size());
+    saved.patches.back_to_back = back_to_back_surfaces(saved.scene);
     saved.area.resize(n);
     for (double& a : saved.area) {
         a = r.f64("element area");

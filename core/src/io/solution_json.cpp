@@ -24,6 +24,10 @@ json triple(const glm::dvec3& v) {
     return json::array({v.x, v.y, v.z});
 }
 
+glm::dvec3 outside_irradiance(const Transport& transport, std::size_t i) {
+    return transport.outside.empty() ? glm::dvec3(0.0) : transport.outside[i];
+}
+
 json patch_json(const Scene& scene, const PatchMesh& patches, const Transport& transport,
                 std::span<const glm::dvec3> radiosity, std::size_t i) {
     const Patch& patch = patches.patches[i];
@@ -37,7 +41,9 @@ json patch_json(const Scene& scene, const PatchMesh& patches, const Transport& t
                 {"centroid", triple(patch.centroid)},
                 {"normal", triple(patch.normal)},
                 {"reflectance", triple(transport.reflectance[i])},
-                {"emission", triple(transport.emission[i])},
+                {"emission", triple(surface.material.emitted_radiosity())},
+                // The irradiance from the sky and sun (0 without them).
+                {"outside_irradiance", triple(outside_irradiance(transport, i))},
                 {"radiosity", triple(radiosity[i])},
                 {"radiance", triple(radiosity[i] / std::numbers::pi)}};
 }
@@ -78,6 +84,7 @@ json stats_json(const Transport& transport, const SolveStatistics& stats) {
         {"tolerance", stats.tolerance},
         {"energy",
          {{"emitted", triple(stats.energy.emitted)},
+          {"outside", triple(stats.energy.outside)},
           {"absorbed", triple(stats.energy.absorbed)},
           {"escaped", triple(stats.energy.escaped)}}},
         {"transport", transport_json(stats.transport)},

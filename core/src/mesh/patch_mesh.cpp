@@ -296,17 +296,6 @@ double patch_size_that_fits(const Scene& scene, double patch_size, double count,
     return std::ceil(size / step) * step;
 }
 
-std::vector<std::uint8_t> back_to_back_surfaces(const Scene& scene) {
-    std::vector<std::uint8_t> flags(scene.surfaces.size(), 0);
-    bool any = false;
-    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        flags[s] = scene.surfaces[s].back_to_back ? 1 : 0;
-        any = any || flags[s] != 0;
-    }
-    if (!any) flags.clear();
-    return flags;
-}
-
 }  // namespace
 
 Patch measure_patch(std::span<const glm::dvec3> points, const glm::uvec4& c, std::uint32_t surface,
@@ -322,6 +311,17 @@ Patch measure_patch(std::span<const glm::dvec3> points, const glm::uvec4& c, std
     patch.centroid = patch.area > 0.0 ? (a012 * (p0 + p1 + p2) + a023 * (p0 + p2 + p3)) / (3.0 * patch.area)
                                       : (p0 + p1 + p2) / 3.0;
     return patch;
+}
+
+std::vector<std::uint8_t> back_to_back_surfaces(const Scene& scene) {
+    std::vector<std::uint8_t> flags(scene.surfaces.size(), 0);
+    bool any = false;
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        flags[s] = scene.surfaces[s].back_to_back ? 1 : 0;
+        any = any || flags[s] != 0;
+    }
+    if (!any) flags.clear();
+    return flags;
 }
 
 double default_patch_size(const Scene& scene) {

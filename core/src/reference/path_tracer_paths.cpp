@@ -41,6 +41,8 @@ PathContext::PathContext(const Scene& scene, const PatchMesh& patches, const Pat
       reflectance_(per_patch(scene, patches, [](const Material& m) { return m.reflectance; })),
       emitted_radiance_(per_patch(scene, patches, [](const Material& m) { return m.emission; })),
       emitters_(patches, emitted_radiance_),
+      sky_(scene.sky),
+      sun_(scene.sun),
       offset_(ray_offset(patches)) {}
 
 void PathContext::start_paths(std::span<const PathStart> starts, std::span<glm::dvec3> values,
@@ -78,12 +80,26 @@ void PathContext::sample_direct(std::uint32_t k, RandomStream& random, PathScrat
     if (cos_x <= 0.0 || cos_y <= 0.0) return;
     const double weight =
         options_.mis ? power_heuristic(light.pdf_area * distance2 / cos_y, cos_x / std::numbers::pi) : 1.0;
-    path.direct = path.throughput * emitted_radiance_[light.patch] *
-                  (weight * cos_x * cos_y / (distance2 * light.pdf_area));
     const glm::dvec3 origin = path.point + offset_ * n_x;
     const glm::dvec3 target = light.point + offset_ * n_y;
     s.shadowed.push_back(k);
+    s.shadowed_light.push_back(path.throughput * emitted_radiance_[light.patch] *
+                               (weight * cos_x * cos_y / (distance2 * light.pdf_area)));
     s.shadow_rays.push_back(Ray{origin, 0.0f, target - origin, 1.0f});
+}
+
+// The sun's irradiance E cos θx at the path's point, times the path's throughput, if its shadow ray to
+// infinity is clear.
+void PathContext::sample_sun(std::uint32_t k, PathScratch& s) const {
+    if (!sun_.present()) return;
+    const PathState& path = s.paths[k];
+    const glm::dvec3& n = patches_.patches[path.patch].normal;
+    const double cos_x = glm::dot(n, sun_.direction);
+    if (cos_x <= 0.0) return;
+    s.shadowed.push_back(k);
+    s.shadowed_light.push_back(path.throughput * sun_.irradiance * cos_x);
+    s.shadow_rays.push_back(
+        Ray{path.point + offset_ * n, 0.0f, sun_.direction, std::numeric_limits<float>::infinity()});
 }
 
 Ray PathContext::bounce_ray(const PathState& path, RandomStream& random) const {
@@ -117,6 +133,9 @@ void PathContext::add_reached_emission(const PathState& path, const glm::dvec3& 
 // black surface, reached max_depth, or lost at roulette.
 bool PathContext::continue_path(PathState& path, const Ray& ray, const RayHit& hit, RandomStream& random,
                                 glm::dvec3& value) const {
+    // A bounce that leaves the scene meets the sky; cosine sampling estimates its irradiance as π L.
+    if (hit.patch == RayHit::kMissed && sky_.present())
+        value += path.throughput * std::numbers::pi * sky_.radiance_from(glm::normalize(ray.direction));
     if (hit.patch >= patches_.size()) return false;
     const glm::dvec3 reached =
         glm::dvec3(ray.origin) + static_cast<double>(hit.t) * glm::dvec3(ray.direction);
@@ -142,17 +161,19 @@ std::uint64_t PathContext::trace(std::span<const PathStart> starts, std::span<Ra
     std::uint64_t traced = 0;
     while (!s.live.empty()) {
         s.shadowed.clear();
+        s.shadowed_light.clear();
         s.shadow_rays.clear();
         s.rays.clear();
         for (const std::uint32_t k : s.live) {
             sample_direct(k, random[k], s);
+            sample_sun(k, s);
             s.rays.push_back(bounce_ray(s.paths[k], random[k]));
         }
         if (!s.shadow_rays.empty()) {
             s.blocked.resize(s.shadow_rays.size());
             ray_scene_.occluded(s.shadow_rays, s.blocked);
             for (std::size_t j = 0; j < s.shadowed.size(); ++j) {
-                if (!s.blocked[j]) values[s.shadowed[j]] += s.paths[s.shadowed[j]].direct;
+                if (!s.blocked[j]) values[s.shadowed[j]] += s.shadowed_light[j];
             }
         }
         s.hits.resize(s.rays.size());

@@ -57,7 +57,6 @@ struct PathStart {
 struct PathState {
     glm::dvec3 point{0.0};
     glm::dvec3 throughput{0.0};  // the product of ρ along the path, over the roulette survival
-    glm::dvec3 direct{0.0};      // the shadow ray's contribution, if it is not blocked
     std::uint32_t patch = kNoPatch;
     int depth = 0;  // bounces taken
 };
@@ -65,8 +64,9 @@ struct PathState {
 // Per-thread working memory, reused from batch to batch so tracing allocates nothing once warm.
 struct PathScratch {
     std::vector<PathState> paths;
-    std::vector<std::uint32_t> live;      // paths still going
-    std::vector<std::uint32_t> shadowed;  // paths with a shadow ray in flight, in shadow-ray order
+    std::vector<std::uint32_t> live;         // paths still going
+    std::vector<std::uint32_t> shadowed;     // paths with a shadow ray in flight, in shadow-ray order
+    std::vector<glm::dvec3> shadowed_light;  // what each shadow ray adds to its path if it is not blocked
     std::vector<Ray> shadow_rays;
     std::vector<std::uint8_t> blocked;
     std::vector<Ray> rays;  // bounce (or camera) rays, one per live path
@@ -91,6 +91,7 @@ class PathContext {
   private:
     void start_paths(std::span<const PathStart> starts, std::span<glm::dvec3> values, PathScratch& s) const;
     void sample_direct(std::uint32_t k, RandomStream& random, PathScratch& s) const;
+    void sample_sun(std::uint32_t k, PathScratch& s) const;
     Ray bounce_ray(const PathState& path, RandomStream& random) const;
     void add_reached_emission(const PathState& path, const glm::dvec3& point, std::uint32_t patch,
                               glm::dvec3& value) const;
@@ -103,6 +104,8 @@ class PathContext {
     std::vector<glm::dvec3> reflectance_;       // ρ per patch
     std::vector<glm::dvec3> emitted_radiance_;  // Le per patch
     EmitterSampler emitters_;
+    Sky sky_;
+    Sun sun_;
     double offset_;  // how far rays start off a surface: a share of the scene's size
 };
 

@@ -258,9 +258,7 @@ Scene build_scene(const PolygonSoup& input) {
     }
     scene.warnings.insert(scene.warnings.end(), lift_warnings.begin(), lift_warnings.end());
     if (scene.surfaces.empty()) throw InputError(soup.source + ": the scene has no faces with area");
-    if (!has_emitter(scene)) {
-        scene.warnings.push_back(soup.source + ": no material emits light (Ke), so the scene will be black");
-    }
+    if (!has_emitter(scene)) scene.warnings.push_back(no_emitter_warning(soup.source));
     return scene;
 }
 

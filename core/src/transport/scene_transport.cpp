@@ -2,7 +2,9 @@
 
 #include <string>
 
+#include "rad/ray/ray_scene.hpp"
 #include "rad/transport/uniform/uniform_transport.hpp"
+#include "transport/external/outside_light.hpp"
 
 namespace rad {
 
@@ -102,8 +104,10 @@ bool has_matrix(Subdivision subdivision) {
     return subdivision == Subdivision::uniform || subdivision == Subdivision::adaptive;
 }
 
-SceneTransport build_scene_transport(const Scene& scene, const PatchMesh& base,
-                                     const TransportSettings& settings, Progress* progress) {
+namespace {
+
+SceneTransport build_transport(const Scene& scene, const PatchMesh& base, const TransportSettings& settings,
+                               Progress* progress) {
     switch (choose_subdivision(settings.subdivision, base.size())) {
         case Subdivision::adaptive:
             return adaptive(scene, base, settings, progress);
@@ -116,6 +120,30 @@ SceneTransport build_scene_transport(const Scene& scene, const PatchMesh& base,
             break;
     }
     return uniform(scene, base, settings, progress);
+}
+
+// The sky's and sun's light on each element, measured on the elements themselves (hierarchies refine below
+// their base patches, where a shadow's edge may run), as a source beside the emitters' E.
+void add_outside_light(const Scene& scene, const TransportSettings& settings, SceneTransport& out,
+                       Progress* progress) {
+    if (!has_outside_light(scene)) return;
+    Transport& t = *out.transport;
+    const PatchMesh& elements = *out.patches;
+    const RayScene rays(elements);
+    t.outside = outside_irradiance(scene, elements, rays, settings.form_factors.seed, t.area, progress);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const Material& material = scene.surfaces[elements.patches[i].surface].material;
+        t.emission[i] = material.emitted_radiosity() + t.reflectance[i] * t.outside[i];
+    }
+}
+
+}  // namespace
+
+SceneTransport build_scene_transport(const Scene& scene, const PatchMesh& base,
+                                     const TransportSettings& settings, Progress* progress) {
+    SceneTransport out = build_transport(scene, base, settings, progress);
+    add_outside_light(scene, settings, out, progress);
+    return out;
 }
 
 }  // namespace rad

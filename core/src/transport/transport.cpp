@@ -20,15 +20,18 @@ bool finite_non_negative(const glm::dvec3& v) {
 void validate_elements(const Transport& transport) {
     const std::size_t n = transport.size();
     if (n == 0) throw std::invalid_argument("radiosity system: no patches");
-    if (transport.reflectance.size() != n || transport.emission.size() != n) {
-        throw std::invalid_argument("radiosity system: area, reflectance and emission differ in size");
+    if (transport.reflectance.size() != n || transport.emission.size() != n ||
+        !(transport.outside.empty() || transport.outside.size() == n)) {
+        throw std::invalid_argument(
+            "radiosity system: area, reflectance, emission and outside light differ in size");
     }
     for (std::size_t i = 0; i < n; ++i) {
         if (!finite_non_negative(transport.area[i]) || transport.area[i] == 0.0) {
             throw std::invalid_argument("radiosity system: patch " + std::to_string(i) +
                                         " has no finite area");
         }
-        if (!finite_non_negative(transport.reflectance[i]) || !finite_non_negative(transport.emission[i])) {
+        if (!finite_non_negative(transport.reflectance[i]) || !finite_non_negative(transport.emission[i]) ||
+            (!transport.outside.empty() && !finite_non_negative(transport.outside[i]))) {
             throw std::invalid_argument("radiosity system: patch " + std::to_string(i) +
                                         " has a negative or non-finite reflectance or emission");
         }
@@ -45,8 +48,11 @@ EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dv
     EnergyBalance balance;
     for (std::size_t i = 0; i < transport.size(); ++i) {
         const double a = transport.area[i];
-        balance.emitted += a * transport.emission[i];
-        balance.absorbed += a * (1.0 - transport.reflectance[i]) * arriving[i];
+        const glm::dvec3& rho = transport.reflectance[i];
+        const glm::dvec3 outside = transport.outside.empty() ? glm::dvec3(0.0) : transport.outside[i];
+        balance.emitted += a * (transport.emission[i] - rho * outside);
+        balance.outside += a * outside;
+        balance.absorbed += a * (1.0 - rho) * (arriving[i] + outside);
         balance.escaped += a * (1.0 - reach[i]) * radiosity[i];
     }
     return balance;

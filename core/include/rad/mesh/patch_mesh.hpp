@@ -65,6 +65,9 @@ double default_patch_size(const Scene& scene);
 // The number of patches build_patches would make, computed without making them.
 std::size_t count_patches(const Scene& scene, double patch_size);
 
+// PatchMesh::back_to_back for the scene's surfaces: empty where none is back-to-back.
+std::vector<std::uint8_t> back_to_back_surfaces(const Scene& scene);
+
 // Throws SettingError (patch_size, with a size that fits) when the count exceeds max_patches.
 PatchMesh build_patches(const Scene& scene, const MeshingOptions& options);
 

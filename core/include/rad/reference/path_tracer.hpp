@@ -25,7 +25,9 @@ namespace rad {
 // gives it against the shadow ray (`mis`; without it, not at all), so no light is counted twice; the start's
 // own emission E(x0) is added once. After `roulette_start` bounces a path survives each further bounce with
 // probability min(max_survival, max channel of ρ) and is reweighted, so the estimate stays unbiased. Back
-// faces block and neither emit nor reflect, as in the form factors.
+// faces block and neither emit nor reflect, as in the form factors. The scene's sky is met by bounces that
+// leave the scene (counted at full weight: no shadow ray samples it); its sun gets a shadow ray at every
+// vertex.
 //
 // Each path's random stream depends only on (seed, item, sample), where the item is the point, patch or
 // pixel, and sums are reduced in a fixed order, so the results are the same for any number of threads.

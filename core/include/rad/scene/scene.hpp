@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rad/scene/material.hpp"
+#include "rad/scene/sky.hpp"
 
 namespace rad {
 
@@ -50,6 +51,8 @@ struct Scene {
     std::string source;  // file path or builtin:NAME, for messages
     std::vector<Surface> surfaces;
     std::optional<Camera> camera;
+    Sky sky;  // none unless the command line or the file asks for one
+    Sun sun;
     std::vector<std::string> warnings;  // for the caller to show; the library prints nothing
 };
 
@@ -62,6 +65,10 @@ double surface_area(const SurfaceMesh& mesh);
 double total_area(const Scene& scene);
 BoundingBox bounding_box(const Scene& scene);
 bool has_emitter(const Scene& scene);
+// Whether a sky or a sun lights the scene from outside.
+bool has_outside_light(const Scene& scene);
+// The warning a loader gives for a scene whose materials emit nothing, which a sky or sun makes moot.
+std::string no_emitter_warning(const std::string& source);
 // The indices of the surfaces whose material emits.
 std::vector<std::uint32_t> emitting_surfaces(const Scene& scene);
 

@@ -55,7 +55,11 @@ class Transport {
 
     std::vector<double> area;
     std::vector<glm::dvec3> reflectance;
+    // What each element sends before any bounce: its emitted radiosity E, plus ρ H_out where a sky or sun
+    // lights the scene (the equation is B = emission + ρ H(B)).
     std::vector<glm::dvec3> emission;
+    // Per element, H_out: the irradiance from the sky and the sun (empty when neither lights the scene).
+    std::vector<glm::dvec3> outside;
 
   protected:
     Transport() = default;
@@ -70,16 +74,18 @@ class Transport {
 // unsolvable (ρ ≥ 1, rows summing over 1) pass here; the solvers report them.
 void validate_elements(const Transport& transport);
 
-// Power (radiosity × area) per channel, for every transport alike. `escaped` is the light leaving elements
-// that reaches no element: Σ A_i B_i (1 − reach_i). `absorbed` is Σ A_i (1 − ρ_i) H_i with H = gather(B).
-// At convergence emitted = absorbed + escaped, to within the transport's reciprocity error (the derivation
-// uses A_i F_ij = A_j F_ji); in a closed scene nothing escapes.
+// Power (radiosity × area) per channel, for every transport alike. `emitted` is the emitters' Σ A_i E_i and
+// `outside` the light the sky and sun bring in, Σ A_i H_out,i. `escaped` is the light leaving elements that
+// reaches no element: Σ A_i B_i (1 − reach_i). `absorbed` is Σ A_i (1 − ρ_i) (H_i + H_out,i) with
+// H = gather(B). At convergence emitted + outside = absorbed + escaped, to within the transport's
+// reciprocity error (the derivation uses A_i F_ij = A_j F_ji); in a closed scene nothing escapes.
 struct EnergyBalance {
     glm::dvec3 emitted{0.0};
+    glm::dvec3 outside{0.0};
     glm::dvec3 absorbed{0.0};
     glm::dvec3 escaped{0.0};
 
-    glm::dvec3 imbalance() const { return emitted - absorbed - escaped; }
+    glm::dvec3 imbalance() const { return emitted + outside - absorbed - escaped; }
 };
 
 EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dvec3> radiosity);

@@ -18,6 +18,7 @@
 #include "transport/clustered/cluster_flow.hpp"
 #include "transport/clustered/cluster_geometry.hpp"
 #include "transport/clustered/clustered_refine.hpp"
+#include "transport/external/outside_light.hpp"
 #include "transport/patch_materials.hpp"
 #include "transport/refinement_settings.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
@@ -205,6 +206,7 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
     if (progress) progress->begin("clustering", 0);
     build_clusters(base, options.max_cluster_patches, *h);
     const RayScene rays(base);
+    add_outside_light(scene, base, rays, options.seed, {}, h->reflectance, h->emission, progress);
     const double offset = ray_offset(base);
     // Closer than this is contact: a thousandth of the scene's extent.
     const double contact = 1e-3 * bounding_box(scene).largest_extent();

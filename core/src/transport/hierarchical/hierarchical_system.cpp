@@ -11,6 +11,7 @@
 #include "ray/coverage.hpp"
 #include "transport/hierarchical/hierarchical_first_links.hpp"
 #include "transport/hierarchical/hierarchical_refine.hpp"
+#include "transport/external/outside_light.hpp"
 #include "transport/patch_materials.hpp"
 #include "transport/refinement_settings.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
@@ -122,6 +123,8 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
     std::vector<double> covered(base.size());
     measure_coverage(base, rays, o.seed, covered);
     for (double c : covered) system->exposed_share.push_back(static_cast<float>(1.0 - c));
+    add_outside_light(scene, base, rays, o.seed, system->exposed_share, system->reflectance, system->emission,
+                      progress);
     const LinkEstimator estimator(system->tree, system->exposed_share, rays, ray_offset(base),
                                   o.visibility_rays, o.seed);
     LinkRefiner refiner(*system, estimator, o, report.min_patch_size, budget, report, progress);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ray/coverage.hpp"
+#include "sampling/bilinear_quad.hpp"
 #include "sampling/sampling.hpp"
 
 namespace rad {
@@ -19,20 +20,6 @@ namespace {
 // Rays traced per Embree call while a row is computed: large enough for Embree's stream interface, small
 // enough that the buffers stay in cache.
 constexpr std::size_t kBatchRays = 256;
-
-// The bilinear map of the unit square onto a quad and its Jacobian |dp/du x dp/dv|.
-struct BilinearQuad {
-    glm::dvec3 a, b, c, d;
-
-    glm::dvec3 point(const glm::dvec2& u) const {
-        return (1 - u.x) * (1 - u.y) * a + u.x * (1 - u.y) * b + u.x * u.y * c + (1 - u.x) * u.y * d;
-    }
-    double jacobian(const glm::dvec2& u) const {
-        const glm::dvec3 du = (1 - u.y) * (b - a) + u.y * (c - d);
-        const glm::dvec3 dv = (1 - u.x) * (d - a) + u.x * (c - b);
-        return glm::length(glm::cross(du, dv));
-    }
-};
 
 // Per-thread working memory: the rays of one batch and a dense accumulator over all patches, with the list
 // of patches touched so that clearing it costs as much as filling it.
