@@ -57,7 +57,8 @@ std::vector<std::uint32_t> emitting_surfaces(const Scene& scene) {
 }
 
 std::string no_emitter_warning(const std::string& source) {
-    return source + ": no material emits light (Ke), so the scene will be black unless a sky or sun lights it";
+    return source +
+           ": no material emits light (Ke), so the scene will be black unless a sky or sun lights it";
 }
 
 bool has_outside_light(const Scene& scene) {

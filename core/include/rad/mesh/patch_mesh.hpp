@@ -39,7 +39,8 @@ struct PatchMesh {
     // corners.
     std::vector<std::uint32_t> outline_begin;
     std::vector<std::uint32_t> outline;
-    // Per surface, 1 where it is back-to-back (Surface::back_to_back); empty where every surface is one-sided.
+    // Per surface, 1 where it is back-to-back (Surface::back_to_back); empty where every surface is
+    // one-sided.
     std::vector<std::uint8_t> back_to_back;
 
     std::size_t size() const { return patches.size(); }

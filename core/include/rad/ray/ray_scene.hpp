@@ -46,7 +46,8 @@ class RayScene {
     void occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
 
     // hits[k] = the first surface rays[k] meets: a patch seen from its front, kBackFace or kMissed. The back
-    // of a back-to-back patch (PatchMesh::is_back_to_back) is passed through: the other side's front is there.
+    // of a back-to-back patch (PatchMesh::is_back_to_back) is passed through: the other side's front is
+    // there.
     void intersect(std::span<const Ray> rays, std::span<RayHit> hits) const;
 
   private:
