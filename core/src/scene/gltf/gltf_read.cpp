@@ -115,8 +115,14 @@ GltfFile read_gltf(const std::string& path) {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const auto size = static_cast<unsigned int>(bytes.size());  // at most kMaxSceneFileBytes
     // No base folder: GltfFileAccess places the URIs in the scene's folder itself.
-    const bool ok = glb ? reader.LoadBinaryFromMemory(&file.model, &err, &warn, data, size, "")
-                        : reader.LoadASCIIFromString(&file.model, &err, &warn, bytes.data(), size, "");
+    bool ok = false;
+    try {
+        ok = glb ? reader.LoadBinaryFromMemory(&file.model, &err, &warn, data, size, "")
+                 : reader.LoadASCIIFromString(&file.model, &err, &warn, bytes.data(), size, "");
+    } catch (const std::exception& e) {
+        // tinygltf reports by its return value, but a container's at() or the JSON library may still throw.
+        throw InputError(gltf_message(file, "tinygltf cannot read it: " + one_line(e.what())));
+    }
     if (!access.refusal().empty()) throw InputError(gltf_message(file, access.refusal()));
     if (!ok) throw InputError(gltf_message(file, err.empty() ? "tinygltf cannot read it" : one_line(err)));
     if (!warn.empty()) file.warnings.insert(file.warnings.begin(), gltf_message(file, one_line(warn)));
