@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -203,6 +205,32 @@ TEST(GltfLoader, ATextureCountsAsItsMeanInLinearSpace) {
     const Scene broken = load_scene(write_gltf(dir, doc));
     expect_near(broken.surfaces[0].material.reflectance, glm::dvec3(0.5));
     EXPECT_TRUE(has_warning(broken, "images[0]: not used")) << broken.warnings.size();
+}
+
+// An image stored in a buffer view (as a .glb holds its images) is decoded after the view is checked.
+TEST(GltfLoader, AnImageInABufferViewIsDecodedAfterItsViewIsChecked) {
+    TempDir dir;
+    const std::string png = (dir.path() / "grey.png").string();
+    write_image(png, filled_image(2, 2, glm::vec3(0.5f)));
+    std::ifstream in(png, std::ios::binary);
+    const std::string image{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::string blob = bytes_of({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    blob.append("\0\0\1\0\2\0", 6);
+    const std::size_t offset = blob.size();
+    blob += image;
+    json doc = triangle();
+    doc["buffers"][0] = {{"byteLength", blob.size()}, {"uri", data_uri(blob)}};
+    doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", image.size()}});
+    doc["images"] = {{{"bufferView", 2}, {"mimeType", "image/png"}}};
+    doc["textures"] = {{{"source", 0}}};
+    doc["materials"] = {{{"name", "grey"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    doc["meshes"][0]["primitives"][0]["material"] = 0;
+    const Scene scene = load_scene(write_gltf(dir, doc));
+    expect_near(scene.surfaces[0].material.reflectance, glm::dvec3(linear_of(0.5f)), 1e-12);
+
+    doc["bufferViews"][2]["byteLength"] = image.size() + 1;
+    test::expect_input_error(load_gltf, write_gltf(dir, doc),
+                             {"s.gltf: bufferViews[2]: bytes", "exceed buffer 0"});
 }
 
 // Σ π Le A over the light's sphere.

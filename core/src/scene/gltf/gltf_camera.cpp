@@ -30,6 +30,9 @@ std::optional<Camera> camera_at(const GltfFile& file, const PlacedNode& placed,
     out.target = out.eye + glm::normalize(forward);
     out.up = glm::normalize(up);
     out.fov_degrees = yfov * 180.0 / std::numbers::pi;
+    for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(out.eye[c]) || !std::isfinite(out.target[c]) || !std::isfinite(out.up[c]))
+            refuse(file, "nodes[" + std::to_string(placed.node) + "]: its camera is not at a finite place");
     return out;
 }
 
