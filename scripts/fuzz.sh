@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzz smoke: builds the libFuzzer targets (tests/fuzz: fuzz_obj, fuzz_ply, fuzz_cli) with clang,
+# Fuzz smoke: builds the libFuzzer targets (tests/fuzz: fuzz_obj, fuzz_ply, fuzz_gltf, fuzz_cli) with clang,
 # AddressSanitizer and UndefinedBehaviorSanitizer into build-fuzz, then runs each for FUZZ_SECONDS (20)
 # on a fresh copy of its seed corpus (tests/fuzz/corpus/TARGET; the repository's copy is never written).
 # A crash, timeout, leak or out-of-memory fails the script and names the reproducer, which is kept in
@@ -8,7 +8,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${FUZZ_SECONDS:-20}"
-read -r -a targets <<<"${FUZZ_TARGETS:-fuzz_obj fuzz_ply fuzz_cli}"
+read -r -a targets <<<"${FUZZ_TARGETS:-fuzz_obj fuzz_ply fuzz_gltf fuzz_cli}"
 "$root/scripts/install-deps.sh"
 
 # RelWithDebInfo: fast enough to fuzz, with line numbers in the sanitizers' reports.

@@ -76,6 +76,7 @@ TEST_P(FuzzReplay, CrashesFoundAreHandled) {
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay,
                          testing::Values(FuzzTarget{"obj", fuzz::load_obj_and_mtl},
                                          FuzzTarget{"ply", fuzz::load_ply},
+                                         FuzzTarget{"gltf", fuzz::load_gltf_or_glb},
                                          FuzzTarget{"cli", fuzz::parse_command_line}),
                          [](const testing::TestParamInfo<FuzzTarget>& info) { return info.param.name; });
 

@@ -114,6 +114,11 @@ Outcome load_ply(std::span<const std::uint8_t> bytes) {
     return load_and_check(scratch().write("scene.ply", as_text(bytes)));
 }
 
+Outcome load_gltf_or_glb(std::span<const std::uint8_t> bytes) {
+    const std::string_view text = as_text(bytes);
+    return load_and_check(scratch().write(text.starts_with("glTF") ? "scene.glb" : "scene.gltf", text));
+}
+
 Outcome parse_command_line(std::span<const std::uint8_t> bytes) {
     const std::vector<std::string> arguments = split_arguments(as_text(bytes));
     std::vector<const char*> argv{"radiosity"};

@@ -35,6 +35,10 @@ Outcome load_obj_and_mtl(std::span<const std::uint8_t> bytes);
 // Writes the bytes as scene.ply into this process's scratch folder and loads it.
 Outcome load_ply(std::span<const std::uint8_t> bytes);
 
+// Writes the bytes as scene.glb when they start with "glTF" (the binary form's magic), else as scene.gltf,
+// into this process's scratch folder, and loads it. The seeds embed their buffers as data: URIs.
+Outcome load_gltf_or_glb(std::span<const std::uint8_t> bytes);
+
 // Splits the bytes into arguments at '\0' or '\n' (at most kMaxArguments) and parses them with the
 // program's own command line, without running the command they choose.
 constexpr std::size_t kMaxArguments = 64;

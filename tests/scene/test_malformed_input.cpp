@@ -36,7 +36,8 @@ std::map<std::string, std::string> expected_messages() {
 }
 
 bool is_scene(const fs::path& p) {
-    return p.extension() == ".obj" || p.extension() == ".ply";
+    return p.extension() == ".obj" || p.extension() == ".ply" || p.extension() == ".gltf" ||
+           p.extension() == ".glb";
 }
 
 TEST(MalformedInput, EverySceneInTheCorpusIsListedWithItsMessage) {

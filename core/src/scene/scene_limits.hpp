@@ -30,4 +30,9 @@ constexpr double kMaxCoordinate = 1e30;
 // Distinct material libraries one OBJ file may name.
 constexpr std::size_t kMaxMaterialLibraries = 64;
 
+// Most texels one glTF texture may decode to (an 8192 × 8192 image, 256 MiB as 8-bit RGBA): a larger one
+// is not decoded (its material takes its factor alone, with a warning), so a forged image header cannot
+// make the decoder allocate gigabytes.
+constexpr std::size_t kMaxTextureTexels = std::size_t{1} << 26;
+
 }  // namespace rad

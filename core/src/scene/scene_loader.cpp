@@ -12,7 +12,9 @@ Scene load_scene(const std::string& spec) {
     const std::string ext = lowercase_extension(spec);
     if (ext == ".obj") return load_obj(spec);
     if (ext == ".ply") return load_ply(spec);
-    throw InputError(spec + ": unknown scene format '" + ext + "' (use .obj, .ply or builtin:NAME)");
+    if (ext == ".gltf" || ext == ".glb") return load_gltf(spec);
+    throw InputError(spec + ": unknown scene format '" + ext +
+                     "' (use .obj, .ply, .gltf, .glb or builtin:NAME)");
 }
 
 }  // namespace rad
