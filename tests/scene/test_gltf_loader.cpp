@@ -260,13 +260,38 @@ TEST(GltfLoader, APointLightEmitsItsPower) {
     const glm::dvec3 expected = 4.0 * std::numbers::pi * 10.0 * glm::dvec3(1.0, 0.5, 0.25);
     const glm::dvec3 power = emitted_power(scene);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(power[c], expected[c], 1e-9 * expected[c]) << c;
-    EXPECT_TRUE(has_warning(scene, "directional light 'sun' not modelled")) << scene.warnings.size();
+    EXPECT_TRUE(scene.sun.present());  // the directional light, of intensity 1 by default
 
     doc["extensions"]["KHR_lights_punctual"]["lights"][0]["type"] = "spot";
     doc["extensions"]["KHR_lights_punctual"]["lights"][0]["spot"] = json::object();
     const Scene spot = load_scene(write_gltf(dir, doc));
     EXPECT_TRUE(has_warning(spot, "1 spot light(s)"));
     EXPECT_NEAR(emitted_power(spot).x, expected.x, 1e-9 * expected.x);
+}
+
+// A directional light shines along its node's -z: the sun lies toward +z, here turned by a quarter turn
+// about x (the quaternion (sin 45°, 0, 0, cos 45°) takes +z to -y).
+TEST(GltfLoader, TheFirstDirectionalLightIsTheSun) {
+    TempDir dir;
+    json doc = triangle();
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"name", "sun"}, {"type", "directional"}, {"intensity", 3.0}, {"color", {1.0, 0.5, 0.25}}},
+        {{"name", "moon"}, {"type", "directional"}}};
+    const double h = std::sqrt(0.5);
+    doc["nodes"] = {
+        {{"mesh", 0}},
+        {{"rotation", {h, 0.0, 0.0, h}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+        {{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}}};
+    doc["scenes"][0]["nodes"] = {0, 1, 2};
+    const Scene scene = load_scene(write_gltf(dir, doc));
+    ASSERT_TRUE(scene.sun.present());
+    EXPECT_NEAR(scene.sun.direction.x, 0.0, 1e-12);
+    EXPECT_NEAR(scene.sun.direction.y, -1.0, 1e-12);
+    EXPECT_NEAR(scene.sun.direction.z, 0.0, 1e-12);
+    EXPECT_EQ(scene.sun.irradiance, glm::dvec3(3.0, 1.5, 0.75));
+    EXPECT_TRUE(has_warning(scene, "1 more directional light(s) left out"));
+    EXPECT_FALSE(has_warning(scene, "no material emits light"));
 }
 
 TEST(GltfLoader, TheFirstPerspectiveCameraIsTheScenes) {

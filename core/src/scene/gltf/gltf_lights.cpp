@@ -59,6 +59,7 @@ BoundingBox soup_bounds(const PolygonSoup& soup) {
 struct PunctualLight {
     int light = -1;
     glm::dvec3 position{0.0};
+    glm::dvec3 toward{0.0, 0.0, 1.0};  // the node's +z in the world: a light shines along its -z
 };
 
 // The lights the placed nodes carry (KHR_lights_punctual on a node: {"light": N}).
@@ -79,7 +80,10 @@ std::vector<PunctualLight> placed_lights(const GltfFile& file, const std::vector
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(position[c]) || std::abs(position[c]) > kMaxCoordinate)
                 refuse(file, where + ": its light lies beyond 1e30 (or not at a finite place)");
-        lights.push_back({light, position});
+        const glm::dvec3 z = glm::dvec3(placed.world[2]);
+        const double length = glm::length(z);
+        const glm::dvec3 toward = length > 0.0 && std::isfinite(length) ? z / length : glm::dvec3(0, 0, 1);
+        lights.push_back({light, position, toward});
     }
     return lights;
 }
@@ -124,7 +128,7 @@ double add_light_sphere(PolygonSoup& soup, const glm::dvec3& centre, double radi
     return area;
 }
 
-void add_lights(GltfFile& file, const std::vector<PlacedNode>& nodes, PolygonSoup& soup) {
+void add_lights(GltfFile& file, const std::vector<PlacedNode>& nodes, PolygonSoup& soup, Sun& sun) {
     const std::vector<PunctualLight> lights = placed_lights(file, nodes);
     BoundingBox box = soup_bounds(soup);
     for (const PunctualLight& l : lights) box.extend(l.position);
@@ -132,15 +136,18 @@ void add_lights(GltfFile& file, const std::vector<PlacedNode>& nodes, PolygonSou
     // in floating point; a scene of one light alone gets a sphere of radius 1/200.
     const double diagonal = glm::length(box.extent());
     const double radius = (diagonal > 0.0 ? diagonal : 1.0) / 200.0;
-    std::size_t spots = 0;
+    std::size_t spots = 0, extra_suns = 0;
     for (const PunctualLight& l : lights) {
         const tinygltf::Light& light = file.model.lights[static_cast<std::size_t>(l.light)];
         const std::string where = "lights[" + std::to_string(l.light) + "]";
         const std::string name = gltf_name(light.name, "light " + std::to_string(l.light));
         if (light.type == "directional") {
-            file.warnings.push_back(gltf_message(
-                file,
-                "directional light '" + name + "' not modelled; a sun can be given to the program instead"));
+            const glm::dvec3 irradiance = light_colour(file, light, where);
+            if (!sun.present()) {
+                sun = Sun{l.toward, irradiance};
+            } else {
+                ++extra_suns;
+            }
             continue;
         }
         if (light.type != "point" && light.type != "spot")
@@ -160,6 +167,10 @@ void add_lights(GltfFile& file, const std::vector<PlacedNode>& nodes, PolygonSou
         soup.groups[group].material.emission = 4.0 * intensity / area;
         validate_material(soup.groups[group].material, gltf_message(file, where));
     }
+    if (extra_suns > 0)
+        file.warnings.push_back(gltf_message(
+            file, std::to_string(extra_suns) + " more directional light(s) left out: the first is the sun, "
+                                               "and a scene has one"));
     if (spots > 0)
         file.warnings.push_back(gltf_message(
             file, std::to_string(spots) + " spot light(s) emit in every direction, as point lights of "

@@ -17,7 +17,9 @@ double add_light_sphere(PolygonSoup& soup, const glm::dvec3& centre, double radi
 // radius 1/200 of the diagonal of the soup's bounding box with the lights in it) that emits diffusely, with
 // Le = 4 I / A times the light's colour, so its power π Le A is a point light's 4π I (I, the intensity, read
 // as W/sr: the renderer's units are radiometric). A spot light is treated as a point light of the same
-// intensity (its cone is not modelled), with a warning; a directional light is left out, with a warning.
-void add_lights(GltfFile& file, const std::vector<PlacedNode>& nodes, PolygonSoup& soup);
+// intensity (its cone is not modelled), with a warning. The first directional light becomes `sun` (toward the
+// node's +z, the irradiance its intensity times its colour, lux read as W/m²); further ones are left out,
+// with a warning.
+void add_lights(GltfFile& file, const std::vector<PlacedNode>& nodes, PolygonSoup& soup, Sun& sun);
 
 }  // namespace rad

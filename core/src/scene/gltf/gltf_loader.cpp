@@ -36,11 +36,14 @@ Scene load_gltf(const std::string& path) {
     PolygonSoup soup;
     soup.source = path;
     add_meshes(file, nodes, materials, soup);
-    add_lights(file, nodes, soup);
+    Sun sun;
+    add_lights(file, nodes, soup, sun);
     std::optional<Camera> camera = first_camera(file, nodes);
 
     Scene scene = build_scene(soup);
     scene.camera = camera;
+    scene.sun = sun;
+    if (sun.present()) std::erase(scene.warnings, no_emitter_warning(scene.source));
     scene.warnings.insert(scene.warnings.begin(), file.warnings.begin(), file.warnings.end());
     return scene;
 }
