@@ -4,8 +4,10 @@
 #include <cmath>
 
 #include "expect_input_error.hpp"
+#include "rad/io/image_file.hpp"
 #include "rad/scene/scene_loader.hpp"
 #include "rad/util/error.hpp"
+#include "rad/util/srgb.hpp"
 #include "test_support.hpp"
 
 namespace rad {
@@ -32,6 +34,44 @@ void expect_obj_error(const std::string& path, std::initializer_list<std::string
 const char* kMtl =
     "newmtl white\nKd 0.7 0.7 0.7\n"
     "newmtl lamp\nKd 0.5 0.5 0.5\nKe 4 3 2\n";
+
+// map_Kd: the transport sees the mean albedo, so Kd is multiplied by the texture's mean linear colour (the
+// PNG holds sRGB bytes). A texture not found, or outside the scene's folder, leaves Kd, counted in a warning.
+TEST(ObjLoader, AMapKdTextureCountsAsItsMeanInLinearSpace) {
+    TempDir dir;
+    const Image texture{
+        2, 2, {{0.1f, 0.2f, 0.3f}, {0.9f, 0.8f, 0.7f}, {0.5f, 0.0f, 1.0f}, {0.25f, 0.5f, 0.75f}}};
+    write_image((dir.path() / "tex.png").string(), texture);
+    dir.write("s.mtl",
+              "newmtl tex\nKd 0.5 0.5 0.5\nmap_Kd tex.png\n"
+              "newmtl gone\nKd 0.25 0.25 0.25\nmap_Kd missing.png\n"
+              "newmtl outside\nKd 0.75 0.75 0.75\nmap_Kd ../tex.png\n");
+    const std::string obj = dir.write("s.obj",
+                                      "mtllib s.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                      "o a\nusemtl tex\nf 1 2 3\no b\nusemtl gone\nf 1 3 4\n"
+                                      "o c\nusemtl outside\nf 1 2 4\n");
+    const Scene scene = load_obj(obj);
+    glm::dvec3 mean(0.0);
+    for (const glm::vec3& p : texture.pixels) {
+        for (int c = 0; c < 3; ++c) {
+            const double v = srgb_byte(p[c]) / 255.0;
+            mean[c] += (v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4)) / 4.0;
+        }
+    }
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(find_surface(scene, "a")->material.reflectance[c], 0.5 * mean[c], 1e-7);
+    expect_rgb(find_surface(scene, "b")->material.reflectance, glm::dvec3(0.25));
+    expect_rgb(find_surface(scene, "c")->material.reflectance, glm::dvec3(0.75));
+    std::size_t texture_warnings = 0;
+    for (const std::string& w : scene.warnings) {
+        if (w.find("texture") == std::string::npos) continue;
+        ++texture_warnings;
+        EXPECT_NE(w.find("2 texture(s) (map_Kd) not read, first 'missing.png' (not found)"),
+                  std::string::npos)
+            << w;
+    }
+    EXPECT_EQ(texture_warnings, 1u);
+}
 
 TEST(ObjLoader, MaterialsAndGroupsBecomeSurfaces) {
     TempDir dir;

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "rad/util/error.hpp"
+#include "scene/scene_folder.hpp"
 #include "scene/text_file.hpp"
 
 namespace rad {
@@ -31,37 +32,8 @@ void GltfFileAccess::refuse(const std::string& why) {
 }
 
 fs::path GltfFileAccess::resolve(const std::string& uri, std::string& why) const {
-    const fs::path name(uri);
-    const std::string quoted = "uri " + quote_for_message(uri);
-    if (name.is_absolute()) {
-        why = quoted + " is an absolute path; it must lie in the scene's folder";
-        return {};
-    }
-    const fs::path relative = name.lexically_normal();
-    if (relative.empty() || *relative.begin() == ".." || relative == ".") {
-        why = quoted + " reaches outside the scene's folder";
-        return {};
-    }
-    fs::path path = folder_;
-    for (const fs::path& part : relative) {
-        path /= part;
-        std::error_code ec;
-        const fs::file_status status = fs::symlink_status(path, ec);
-        if (status.type() == fs::file_type::not_found || ec == std::errc::filename_too_long) return {};
-        if (ec) {
-            why = quoted + " cannot be inspected: " + ec.message();
-            return {};
-        }
-        if (fs::is_symlink(status)) {
-            why = quoted + " is reached through a link";
-            return {};
-        }
-    }
-    std::error_code ec;
-    if (!fs::is_regular_file(fs::symlink_status(path, ec))) {
-        why = quoted + " is not a regular file";
-        return {};
-    }
+    fs::path path = file_in_scene_folder(folder_, uri, why);
+    if (!why.empty()) why = "uri " + quote_for_message(uri) + " " + why;
     return path;
 }
 

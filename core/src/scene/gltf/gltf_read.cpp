@@ -6,7 +6,7 @@
 #include "scene/gltf/gltf_accessors.hpp"
 #include "scene/gltf/gltf_file.hpp"
 #include "scene/gltf/gltf_file_access.hpp"
-#include "scene/gltf/gltf_texture.hpp"
+#include "scene/texture_mean.hpp"
 #include "scene/text_file.hpp"
 
 namespace rad {

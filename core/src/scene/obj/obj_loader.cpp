@@ -8,6 +8,8 @@
 #include "rad/scene/scene_loader.hpp"
 #include "rad/util/error.hpp"
 #include "scene/obj/obj_syntax.hpp"
+#include "scene/obj/obj_textures.hpp"
+#include "scene/scene_folder.hpp"
 #include "scene/text_file.hpp"
 
 namespace rad {
@@ -25,32 +27,13 @@ struct MaterialLibraries {
                      quote_for_message(lib.name) + " " + why);
 }
 
-// A scene names its materials, not arbitrary files: the library must lie in the scene's folder or below it,
-// reached without links, so a scene cannot read (and echo in messages) files its author did not ship with it.
-// Returns the path to read, or empty when the library does not exist (a warning, not an error).
+// Returns the path to read, or empty when the library does not exist (a warning, not an error); a library
+// the scene-folder rule refuses is an error.
 std::filesystem::path resolve_material_library(const std::string& obj_path, const ObjLibrary& lib) {
-    namespace fs = std::filesystem;
-    const fs::path name(lib.name);
-    if (name.is_absolute())
-        refuse_library(obj_path, lib, "is an absolute path; it must lie in the scene's folder");
-    const fs::path relative = name.lexically_normal();
-    if (relative.empty() || *relative.begin() == "..") {
-        refuse_library(obj_path, lib, "reaches outside the scene's folder");
-    }
-    fs::path path = fs::path(obj_path).parent_path();
-    for (const fs::path& part : relative) {
-        path /= part;
-        std::error_code ec;
-        const fs::file_status status = fs::symlink_status(path, ec);
-        // A name longer than the file system allows cannot exist either.
-        if (status.type() == fs::file_type::not_found || ec == std::errc::filename_too_long) return {};
-        if (ec) refuse_library(obj_path, lib, "cannot be inspected: " + ec.message());
-        if (fs::is_symlink(status))
-            refuse_library(obj_path, lib, "is reached through a link (" + path.string() + ")");
-    }
-    std::error_code ec;
-    if (!fs::is_regular_file(fs::symlink_status(path, ec)))
-        refuse_library(obj_path, lib, "is not a regular file");
+    std::string why;
+    std::filesystem::path path =
+        file_in_scene_folder(std::filesystem::path(obj_path).parent_path(), lib.name, why);
+    if (!why.empty()) refuse_library(obj_path, lib, why);
     return path;
 }
 
@@ -81,12 +64,14 @@ std::string first_line(const std::string& text) {
     return text.substr(0, text.find('\n'));
 }
 
-Material to_material(const tinyobj::material_t& m, const MaterialLibraries& libs, ReflectanceClamps& clamps) {
+Material to_material(const tinyobj::material_t& m, const MaterialLibraries& libs, ReflectanceClamps& clamps,
+                     ObjTextures& textures) {
     Material material;
     material.name = m.name;
     material.reflectance = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
     material.emission = {m.emission[0], m.emission[1], m.emission[2]};
     clamps.clamp(material);
+    textures.apply(m.diffuse_texname, material);
     const auto where = libs.defined_at.find(m.name);
     validate_material(material, where != libs.defined_at.end() ? where->second : "material library");
     return material;
@@ -191,8 +176,10 @@ Scene load_obj(const std::string& path) {
     }
     std::vector<Material> materials;
     ReflectanceClamps clamps;
-    for (const auto& m : reader.GetMaterials()) materials.push_back(to_material(m, libs, clamps));
+    ObjTextures textures(path);
+    for (const auto& m : reader.GetMaterials()) materials.push_back(to_material(m, libs, clamps, textures));
     if (const std::string w = clamps.warning(path); !w.empty()) warnings.push_back(w);
+    if (const std::string w = textures.warning(); !w.empty()) warnings.push_back(w);
     if (const std::string w = transparency_warning(path, reader.GetMaterials()); !w.empty())
         warnings.push_back(w);
 

@@ -1,4 +1,4 @@
-#include "scene/gltf/gltf_texture.hpp"
+#include "scene/texture_mean.hpp"
 
 #include <stb_image.h>
 
