@@ -326,6 +326,16 @@ TEST(GltfLoader, StripsBecomeTrianglesAndPointsAreSkipped) {
     EXPECT_TRUE(has_warning(scene, "skipped 1 primitive(s)"));
 }
 
+TEST(GltfLoader, CornersLeftOverFromATriangleListAreIgnoredWithAWarning) {
+    TempDir dir;
+    json doc = triangle({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0});
+    doc["meshes"][0]["primitives"][0].erase("indices");  // 4 vertices: one triangle and one corner over
+    const Scene scene = load_scene(write_gltf(dir, doc));
+    EXPECT_NEAR(total_area(scene), 0.5, 1e-12);
+    EXPECT_TRUE(
+        has_warning(scene, "1 triangle primitive(s) have a corner count that is not a multiple of 3"));
+}
+
 TEST(GltfLoader, TrianglePairsOfAPlanarQuadBecomeTheQuad) {
     TempDir dir;
     json doc = triangle({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, 1});

@@ -62,6 +62,7 @@ class MeshReader {
     }
 
     std::size_t skipped() const { return skipped_; }
+    std::size_t ragged() const { return ragged_; }
     std::size_t without_material() const { return without_material_; }
 
   private:
@@ -82,6 +83,7 @@ class MeshReader {
             primitive.indices >= 0
                 ? read_indices(file_, primitive.indices, local.size(), kMaxSceneFaceCorners, where)
                 : all_vertices(local.size());
+        if (primitive.mode == TINYGLTF_MODE_TRIANGLES && index.size() % 3 != 0) ++ragged_;
         const std::vector<std::uint32_t> corners = triangle_corners(primitive.mode, index);
         if (soup_.polygons.size() + corners.size() / 3 > kMaxSceneFaces)
             refuse(file_, where + ": the scene's triangles would exceed the limit of " +
@@ -148,6 +150,7 @@ class MeshReader {
     PolygonSoup& soup_;
     std::map<std::pair<int, int>, std::uint32_t> groups_;
     std::size_t skipped_ = 0;
+    std::size_t ragged_ = 0;  // triangle lists whose count of corners is not a multiple of 3
     std::size_t without_material_ = 0;
 };
 
@@ -161,6 +164,11 @@ void add_meshes(GltfFile& file, const std::vector<PlacedNode>& nodes, const std:
         file.warnings.push_back(gltf_message(
             file, "skipped " + std::to_string(reader.skipped()) +
                       " primitive(s) that are not triangles (points, lines, or an unknown mode)"));
+    if (reader.ragged() > 0)
+        file.warnings.push_back(gltf_message(
+            file, std::to_string(reader.ragged()) +
+                      " triangle primitive(s) have a corner count that is not a multiple of 3; the 1 or 2 "
+                      "corners left over are ignored"));
     if (reader.without_material() > 0)
         file.warnings.push_back(
             gltf_message(file, std::to_string(reader.without_material()) +
