@@ -210,7 +210,16 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
     ImGui::InputText("scene", &scene_path_);
     ImGui::SameLine();
     if (ImGui::Button("Open")) open_scene(worker, scene_path_);
-    ImGui::TextDisabled("or drop a .obj, .ply or .radiosity (solve --save) file on the window");
+    ImGui::TextDisabled("or drop a .obj, .ply, .gltf, .glb or .radiosity (solve --save) file on the window");
+    // As --sky and --sun; read when the scene is opened or recomputed, and a bad value is reported there.
+    ImGui::InputText("sky", &options_.scene.sky);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "R,G,B or L: a uniform sky; overcast,L: the CIE overcast sky; none or empty: the scene's own");
+    ImGui::InputText("sun", &options_.scene.sun);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "X,Y,Z,E or X,Y,Z,R,G,B: toward the sun, and its irradiance; none or empty: the scene's own");
     if (options_.scene.patch_size <= 0.0) options_.scene.patch_size = statistics.patch_size;
     ImGui::InputDouble("patch size", &options_.scene.patch_size, 0.0, 0.0, "%.4g");
     if (ImGui::Combo("form factors", &form_factor_index_, kFormFactorNames, 2)) {
