@@ -6,8 +6,8 @@
 #include "scene/gltf/gltf_accessors.hpp"
 #include "scene/gltf/gltf_file.hpp"
 #include "scene/gltf/gltf_file_access.hpp"
-#include "scene/texture_mean.hpp"
 #include "scene/text_file.hpp"
+#include "scene/texture_mean.hpp"
 
 namespace rad {
 
