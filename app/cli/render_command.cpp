@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli/comma_numbers.hpp"
 #include "cli/commands.hpp"
 #include "cli/export_option.hpp"
 #include "cli/gl_platform_option.hpp"
@@ -59,22 +60,7 @@ glm::dvec3 vec(const std::vector<double>& v, std::size_t at) {
 
 // `where` names the text in errors: "--camera", or "FILE:LINE".
 Camera parse_camera(const std::string& text, const Camera& fallback, const std::string& where) {
-    std::vector<double> values;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        double value = 0.0;
-        std::size_t used = 0;
-        try {
-            value = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != item.size() || !std::isfinite(value)) {
-            throw InputError(where + ": '" + item + "' is not a number (want ex,ey,ez,tx,ty,tz[,ux,uy,uz])");
-        }
-        values.push_back(value);
-    }
+    const std::vector<double> values = comma_numbers(text, where, "ex,ey,ez,tx,ty,tz[,ux,uy,uz]");
     if (values.size() != 6 && values.size() != 9) {
         throw InputError(where + ": " + std::to_string(values.size()) +
                          " numbers; want 6 (eye, target) or 9 (eye, target, up)");

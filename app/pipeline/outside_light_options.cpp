@@ -1,37 +1,25 @@
 #include "pipeline/outside_light_options.hpp"
 
-#include <cmath>
 #include <glm/geometric.hpp>
+#include <span>
 #include <sstream>
 #include <vector>
 
+#include "cli/comma_numbers.hpp"
 #include "rad/util/error.hpp"
 
 namespace rad {
 
 namespace {
 
-// The comma-separated numbers of `text`, each finite and not negative unless `signed_values`.
-std::vector<double> numbers(const std::string& text, const std::string& option, const std::string& want,
-                            bool signed_values) {
-    std::vector<double> values;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        double value = 0.0;
-        std::size_t used = 0;
-        try {
-            value = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
+void refuse_negative(std::span<const double> values, const std::string& option, const std::string& what) {
+    for (double value : values) {
+        if (value < 0.0) {
+            std::ostringstream written;
+            written << value;
+            throw InputError(option + ": " + what + " '" + written.str() + "' is negative");
         }
-        if (used == 0 || used != item.size() || !std::isfinite(value))
-            throw InputError(option + ": '" + item + "' is not a number (want " + want + ")");
-        if (!signed_values && value < 0.0)
-            throw InputError(option + ": '" + item + "' is negative (want " + want + ")");
-        values.push_back(value);
     }
-    return values;
 }
 
 glm::dvec3 colour(const std::vector<double>& v, std::size_t at) {
@@ -47,7 +35,8 @@ Sky parse_sky(const std::string& text) {
     constexpr std::string_view kOvercast = "overcast,";
     const bool overcast = text.starts_with(kOvercast);
     const std::vector<double> v =
-        numbers(overcast ? text.substr(kOvercast.size()) : text, "--sky", want, false);
+        comma_numbers(overcast ? text.substr(kOvercast.size()) : text, "--sky", want);
+    refuse_negative(v, "--sky", "the radiance");
     if (v.size() != 1 && v.size() != 3)
         throw InputError("--sky: " + std::to_string(v.size()) + " numbers; want " + want);
     sky.kind = overcast ? Sky::Kind::overcast : Sky::Kind::uniform;
@@ -59,13 +48,12 @@ Sun parse_sun(const std::string& text) {
     const std::string want = "X,Y,Z,E or X,Y,Z,R,G,B";
     Sun sun;
     if (text == "none") return sun;
-    const std::vector<double> v = numbers(text, "--sun", want, true);
+    const std::vector<double> v = comma_numbers(text, "--sun", want);
     if (v.size() != 4 && v.size() != 6)
         throw InputError("--sun: " + std::to_string(v.size()) + " numbers; want " + want);
     const glm::dvec3 direction(v[0], v[1], v[2]);
     if (!(glm::length(direction) > 0.0)) throw InputError("--sun: the direction X,Y,Z is zero");
-    for (std::size_t k = 3; k < v.size(); ++k)
-        if (v[k] < 0.0) throw InputError("--sun: the irradiance '" + std::to_string(v[k]) + "' is negative");
+    refuse_negative(std::span(v).subspan(3), "--sun", "the irradiance");
     sun.direction = glm::normalize(direction);
     sun.irradiance = colour(v, 3);
     return sun;

@@ -16,33 +16,12 @@
 #include "rad/scene/scene_loader.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/scene_transport.hpp"
+#include "solved_scene.hpp"
 
 namespace rad {
 namespace {
 
-struct Solved {
-    Scene scene;
-    PatchMesh patches;
-    SceneTransport system;
-    std::vector<glm::dvec3> radiosity;
-};
-
-std::unique_ptr<Solved> solve(Scene scene, Subdivision subdivision, double patch_size = 0.0,
-                              std::uint64_t seed = 1) {
-    auto s = std::make_unique<Solved>();
-    s->scene = std::move(scene);
-    s->patches = build_patches(s->scene, MeshingOptions{.patch_size = patch_size});
-    TransportSettings settings;
-    settings.subdivision = subdivision;
-    settings.form_factors.seed = seed;
-    s->system = build_scene_transport(s->scene, s->patches, settings);
-    SolverOptions options;
-    options.tolerance = 1e-7;
-    auto solver = make_solver(SolverMethod::jacobi, *s->system.transport, options);
-    while (!solver->report().finished()) solver->step();
-    s->radiosity.assign(solver->solution().begin(), solver->solution().end());
-    return s;
-}
+using Solved = test::SolvedScene;
 
 // A unit plate of ρ = 0.5 in the plane through the origin with this normal, alone under the sky.
 Scene plate(const glm::dvec3& normal) {
@@ -76,21 +55,21 @@ TEST(OutsideLight, AnOpenPlateGetsTheClosedForms) {
     for (const glm::dvec3& normal : {glm::dvec3(0, 1, 0), glm::dvec3(1, -2, 0.5)}) {
         Scene scene = plate(normal);
         scene.sky = Sky{Sky::Kind::uniform, glm::dvec3(2.0)};
-        const auto s = solve(std::move(scene), Subdivision::uniform, 0.25);
+        const auto s = test::solve_scene(std::move(scene), Subdivision::uniform, 0.25);
         for (const glm::dvec3& b : s->radiosity) EXPECT_NEAR(b.x, 0.5 * std::numbers::pi * 2.0, 1e-12);
     }
     Scene overcast = plate({0, 1, 0});
     overcast.sky = Sky{Sky::Kind::overcast, glm::dvec3(1.0)};
-    const auto o = solve(std::move(overcast), Subdivision::uniform, 0.25);
+    const auto o = test::solve_scene(std::move(overcast), Subdivision::uniform, 0.25);
     EXPECT_NEAR(mean_radiosity(*o), 0.5 * 7.0 * std::numbers::pi / 9.0, 1e-3);
 
     Scene sunny = plate({0, 0, 1});
     sunny.sun = Sun{glm::normalize(glm::dvec3(0, 1, 1)), glm::dvec3(3.0)};
-    const auto s = solve(std::move(sunny), Subdivision::uniform, 0.25);
+    const auto s = test::solve_scene(std::move(sunny), Subdivision::uniform, 0.25);
     for (const glm::dvec3& b : s->radiosity) EXPECT_NEAR(b.x, 0.5 * 3.0 * std::sqrt(0.5), 1e-12);
     Scene behind = plate({0, 0, -1});
     behind.sun = Sun{glm::normalize(glm::dvec3(0, 1, 1)), glm::dvec3(3.0)};
-    EXPECT_EQ(mean_radiosity(*solve(std::move(behind), Subdivision::uniform, 0.25)), 0.0);
+    EXPECT_EQ(mean_radiosity(*test::solve_scene(std::move(behind), Subdivision::uniform, 0.25)), 0.0);
 }
 
 Scene window_room(bool sky, bool sun) {
@@ -104,7 +83,7 @@ Scene window_room(bool sky, bool sun) {
 // What comes in through the window is absorbed or leaves through it again.
 TEST(OutsideLight, TheEnergyOfARoomLitThroughItsWindowBalances) {
     for (Subdivision subdivision : {Subdivision::uniform, Subdivision::adaptive, Subdivision::clustered}) {
-        const auto s = solve(window_room(true, true), subdivision);
+        const auto s = test::solve_scene(window_room(true, true), subdivision);
         const EnergyBalance balance = energy_balance(*s->system.transport, s->radiosity);
         EXPECT_EQ(balance.emitted.y, 0.0);
         EXPECT_GT(balance.outside.y, 0.0);
@@ -121,7 +100,7 @@ TEST(OutsideLight, TheEnergyOfARoomLitThroughItsWindowBalances) {
 TEST(OutsideLight, TheSkyThroughAWindowBringsInPiLA) {
     Scene scene = window_room(false, false);
     scene.sky = Sky{Sky::Kind::uniform, glm::dvec3(2.0)};
-    const auto s = solve(std::move(scene), Subdivision::uniform, 0.5);
+    const auto s = test::solve_scene(std::move(scene), Subdivision::uniform, 0.5);
     const Transport& t = *s->system.transport;
     double flux = 0.0;
     for (std::size_t i = 0; i < t.size(); ++i) flux += t.area[i] * t.outside[i].x;
@@ -152,8 +131,8 @@ double rms_difference(const PatchMesh& patches, std::span<const glm::dvec3> a,
 // the noise averages out, agrees within 3 % and three of the path tracer's standard errors.
 TEST(OutsideLight, TheWindowRoomAgreesWithThePathTracer) {
     for (const auto& [sky, sun] : {std::pair{true, false}, std::pair{false, true}}) {
-        const auto s = solve(window_room(sky, sun), Subdivision::uniform, 0.5);
-        const auto other_seed = solve(window_room(sky, sun), Subdivision::uniform, 0.5, 2);
+        const auto s = test::solve_scene(window_room(sky, sun), Subdivision::uniform, 0.5);
+        const auto other_seed = test::solve_scene(window_room(sky, sun), Subdivision::uniform, 0.5, 2);
         const PathTracer tracer(s->scene, s->patches, {.seed = 5});
         const std::vector<Estimate> traced = tracer.patch_radiosity(8000);
         std::vector<glm::dvec3> reference, error;

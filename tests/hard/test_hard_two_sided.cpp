@@ -11,29 +11,12 @@
 #include "rad/scene/scene_loader.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/scene_transport.hpp"
+#include "solved_scene.hpp"
 
 namespace rad {
 namespace {
 
-struct Solved {
-    Scene scene;
-    PatchMesh patches;
-    SceneTransport system;
-    std::vector<glm::dvec3> radiosity;
-};
-
-std::unique_ptr<Solved> solve(Scene scene, Subdivision subdivision, double patch_size = 0.0) {
-    auto s = std::make_unique<Solved>();
-    s->scene = std::move(scene);
-    s->patches = build_patches(s->scene, MeshingOptions{.patch_size = patch_size});
-    TransportSettings settings;
-    settings.subdivision = subdivision;
-    s->system = build_scene_transport(s->scene, s->patches, settings);
-    auto solver = make_solver(SolverMethod::jacobi, *s->system.transport, SolverOptions{});
-    while (!solver->report().finished()) solver->step();
-    s->radiosity.assign(solver->solution().begin(), solver->solution().end());
-    return s;
-}
+using Solved = test::SolvedScene;
 
 // Area-weighted mean radiosity (green channel) of the elements of the surfaces with this name.
 double mean_radiosity(const Solved& s, const std::string& name) {
@@ -65,7 +48,7 @@ TEST(BackToBackFaces, AreReadAsOneTwoSidedSurfaceWithAWarning) {
 // keeps the accounting (hierarchical links lose some light at their defaults; docs/subdivision.md).
 TEST(BackToBackFaces, TheEnergyOfAClosedRoomBalances) {
     for (Subdivision subdivision : {Subdivision::uniform, Subdivision::adaptive, Subdivision::clustered}) {
-        const auto s = solve(back_to_back_room(), subdivision);
+        const auto s = test::solve_scene(back_to_back_room(), subdivision);
         const EnergyBalance balance = energy_balance(*s->system.transport, s->radiosity);
         EXPECT_NEAR(balance.absorbed.y + balance.escaped.y, balance.emitted.y, 5e-3 * balance.emitted.y)
             << subdivision_name(subdivision) << ": absorbed " << balance.absorbed.y << ", escaped "
@@ -77,7 +60,7 @@ TEST(BackToBackFaces, TheEnergyOfAClosedRoomBalances) {
 // The panel's side that faces the light (red, ρ = 0.2 in green) is lit directly; the other side (green,
 // ρ = 0.7) sees only the half of the room the panel shades, so it receives less light, but some.
 TEST(BackToBackFaces, EachSideIsLitByWhatItFaces) {
-    const auto s = solve(back_to_back_room(), Subdivision::uniform);
+    const auto s = test::solve_scene(back_to_back_room(), Subdivision::uniform);
     const double lit = mean_radiosity(*s, "panel_a") / 0.2, shaded = mean_radiosity(*s, "panel_b") / 0.7;
     EXPECT_GT(shaded, 0.1 * lit);
     EXPECT_GT(lit, 2.0 * shaded);
@@ -108,8 +91,8 @@ TEST(TwoSidedMaterial, HasABackOfItsOwnThatTheLightNeverReaches) {
     EXPECT_DOUBLE_EQ(surface_area(scene.surfaces[1].mesh), 1.0);
 
     for (Subdivision subdivision : {Subdivision::uniform, Subdivision::clustered}) {
-        const auto two = solve(build_scene(panel_under_light(true, false)), subdivision, 0.25);
-        const auto one = solve(build_scene(panel_under_light(false, false)), subdivision, 0.25);
+        const auto two = test::solve_scene(build_scene(panel_under_light(true, false)), subdivision, 0.25);
+        const auto one = test::solve_scene(build_scene(panel_under_light(false, false)), subdivision, 0.25);
         const double front = mean_radiosity(*two, "panel");
         // The lit side gets what a one-sided panel gets: the light, and nothing lost to its own back.
         EXPECT_NEAR(front, mean_radiosity(*one, "panel"), 1e-3 * front) << subdivision_name(subdivision);
@@ -124,7 +107,7 @@ TEST(TwoSidedMaterial, EmitsOnBothSides) {
     soup.positions.insert(soup.positions.end(), {{0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}});
     soup.groups.push_back({"upper", soup.groups[0].material});
     soup.polygons.push_back({{8, 11, 10, 9}, 2});  // facing −z, down at the light
-    const auto s = solve(build_scene(soup), Subdivision::uniform, 0.25);
+    const auto s = test::solve_scene(build_scene(soup), Subdivision::uniform, 0.25);
     const double lower = mean_radiosity(*s, "panel"), upper = mean_radiosity(*s, "upper");
     EXPECT_GT(lower, 0.1);
     EXPECT_NEAR(upper, lower, 0.02 * lower);
