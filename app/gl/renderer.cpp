@@ -8,14 +8,15 @@ namespace rad {
 
 namespace {
 
-enum Buffer { kPositions = 0, kColours = 1, kTriangles = 2, kOutline = 3 };
+enum Buffer { kPositions = 0, kColours = 1, kTriangles = 2, kOutline = 3, kTexcoords = 4 };
+constexpr int kBufferCount = 5;
 
 }  // namespace
 
 Renderer::Renderer()
     : patch_program_("patch.vert", "patch.frag"), outline_program_("outline.vert", "outline.frag") {
     glGenVertexArrays(1, &vertex_array_);
-    glGenBuffers(4, buffers_);
+    glGenBuffers(kBufferCount, buffers_);
     glBindVertexArray(vertex_array_);
     glBindBuffer(GL_ARRAY_BUFFER, buffers_[kPositions]);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
@@ -23,11 +24,14 @@ Renderer::Renderer()
     glBindBuffer(GL_ARRAY_BUFFER, buffers_[kColours]);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     glEnableVertexAttribArray(1);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[kTexcoords]);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
     glBindVertexArray(0);
 }
 
 Renderer::~Renderer() {
-    glDeleteBuffers(4, buffers_);
+    release_textures();
+    glDeleteBuffers(kBufferCount, buffers_);
     glDeleteVertexArrays(1, &vertex_array_);
 }
 
@@ -52,7 +56,71 @@ void Renderer::upload_geometry(std::span<const glm::vec3> positions, std::span<c
     vertex_count_ = positions.size();
     triangle_index_count_ = triangles.size();
     outline_index_count_ = outline_lines.size();
+    ranges_.assign(1, DrawnRange{0, triangle_index_count_, 0, glm::vec3(1.0f), glm::vec3(0.0f)});
+    release_textures();
+    glBindVertexArray(vertex_array_);
+    glDisableVertexAttribArray(2);
+    glBindVertexArray(0);
     ++geometry_uploads_;
+}
+
+void Renderer::upload_textures(std::span<const glm::vec2> texcoords,
+                               std::span<const DisplayMesh::TexturedRange> ranges) {
+    release_textures();
+    ranges_.clear();
+    glBindVertexArray(vertex_array_);
+    if (ranges.empty() || texcoords.size() != vertex_count_) {
+        glDisableVertexAttribArray(2);
+        glBindVertexArray(0);
+        ranges_.push_back({0, triangle_index_count_, 0, glm::vec3(1.0f), glm::vec3(0.0f)});
+        return;
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[kTexcoords]);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(texcoords.size_bytes()), texcoords.data(),
+                 GL_STATIC_DRAW);
+    glEnableVertexAttribArray(2);
+    glBindVertexArray(0);
+    std::size_t next = 0;  // the first index not yet in a range
+    for (const DisplayMesh::TexturedRange& r : ranges) {
+        const std::size_t first = 3 * std::size_t{r.first_triangle};
+        const std::size_t count = 3 * std::size_t{r.triangle_count};
+        if (first < next || first + count > triangle_index_count_)
+            throw std::logic_error(
+                "Renderer::upload_textures: textured ranges overlap or exceed the triangles");
+        if (first > next) ranges_.push_back({next, first - next, 0, glm::vec3(1.0f), glm::vec3(0.0f)});
+        ranges_.push_back({first, count, texture_of(r.texture), r.albedo_scale, r.emitted_radiance});
+        next = first + count;
+    }
+    if (next < triangle_index_count_)
+        ranges_.push_back({next, triangle_index_count_ - next, 0, glm::vec3(1.0f), glm::vec3(0.0f)});
+}
+
+GLuint Renderer::texture_of(const std::shared_ptr<const Texture>& texture) {
+    if (!texture || texture->width <= 0 || texture->height <= 0 ||
+        texture->srgb.size() != std::size_t{3} * texture->width * texture->height)
+        throw std::logic_error("Renderer::upload_textures: a range without a whole texture");
+    if (const auto it = textures_.find(texture.get()); it != textures_.end()) return it->second;
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glBindTexture(GL_TEXTURE_2D, name);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows of 3-byte texels are not 4-byte aligned
+    // Row 0 is the image's top, which is where texture coordinate v = 0 samples (glTF's convention).
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8, texture->width, texture->height, 0, GL_RGB, GL_UNSIGNED_BYTE,
+                 texture->srgb.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    textures_.emplace(texture.get(), name);
+    return name;
+}
+
+void Renderer::release_textures() {
+    for (const auto& [texture, name] : textures_) glDeleteTextures(1, &name);
+    textures_.clear();
 }
 
 void Renderer::update_colours(std::span<const glm::vec3> radiance) {
@@ -84,7 +152,7 @@ void Renderer::draw(const glm::mat4& view_projection, const DrawOptions& options
     // Push the patches back a little so their outline wins the depth test.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangle_index_count_), GL_UNSIGNED_INT, nullptr);
+    draw_patches();
     glDisable(GL_POLYGON_OFFSET_FILL);
 
     if (options.outline && outline_index_count_ > 0) {
@@ -97,6 +165,21 @@ void Renderer::draw(const glm::mat4& view_projection, const DrawOptions& options
         glDrawElements(GL_LINES, static_cast<GLsizei>(outline_index_count_), GL_UNSIGNED_INT, nullptr);
     }
     glBindVertexArray(0);
+}
+
+void Renderer::draw_patches() const {
+    glUniform1i(patch_program_.uniform("albedo_texture"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    for (const DrawnRange& r : ranges_) {
+        if (r.index_count == 0) continue;
+        glUniform1i(patch_program_.uniform("textured"), r.texture != 0 ? 1 : 0);
+        glUniform3fv(patch_program_.uniform("albedo_scale"), 1, glm::value_ptr(r.albedo_scale));
+        glUniform3fv(patch_program_.uniform("emitted_radiance"), 1, glm::value_ptr(r.emitted_radiance));
+        glBindTexture(GL_TEXTURE_2D, r.texture);
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(r.index_count), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(r.first_index * sizeof(std::uint32_t)));
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 }  // namespace rad

@@ -5,10 +5,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <map>
 #include <span>
+#include <vector>
 
 #include "gl/shader_program.hpp"
+#include "rad/display/display_mesh.hpp"
 
 namespace rad {
 
@@ -35,6 +39,11 @@ class Renderer {
     // Triangles over per-vertex positions, and patch edges as pairs of vertex indices.
     void upload_geometry(std::span<const glm::vec3> positions, std::span<const std::uint32_t> triangles,
                          std::span<const std::uint32_t> outline_lines);
+    // Texel detail for the geometry last uploaded (which drops any earlier): texture coordinates per vertex
+    // and the runs of triangles drawn with a texture, whose vertices' colours are irradiance / π (see
+    // DisplayMesh). Each distinct texture is uploaded once, as an sRGB texture with mipmaps.
+    void upload_textures(std::span<const glm::vec2> texcoords,
+                         std::span<const DisplayMesh::TexturedRange> ranges);
     // Linear radiance per vertex (as many as the positions uploaded).
     void update_colours(std::span<const glm::vec3> radiance);
     void draw(const glm::mat4& view_projection, const DrawOptions& options) const;
@@ -43,10 +52,23 @@ class Renderer {
     std::size_t colour_uploads() const { return colour_uploads_; }
 
   private:
+    struct DrawnRange {
+        std::size_t first_index = 0;
+        std::size_t index_count = 0;
+        GLuint texture = 0;  // 0: untextured
+        glm::vec3 albedo_scale{1.0f};
+        glm::vec3 emitted_radiance{0.0f};
+    };
+    GLuint texture_of(const std::shared_ptr<const Texture>& texture);
+    void release_textures();
+    void draw_patches() const;
+
+    std::vector<DrawnRange> ranges_;  // covering every triangle, in order
+    std::map<const Texture*, GLuint> textures_;
     ShaderProgram patch_program_;
     ShaderProgram outline_program_;
     GLuint vertex_array_ = 0;
-    GLuint buffers_[4] = {};  // positions, colours, triangle indices, outline indices
+    GLuint buffers_[5] = {};  // positions, colours, triangle indices, outline indices, texture coordinates
     std::size_t vertex_count_ = 0;
     std::size_t triangle_index_count_ = 0;
     std::size_t outline_index_count_ = 0;

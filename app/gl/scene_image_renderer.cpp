@@ -14,6 +14,7 @@ SceneImageRenderer::SceneImageRenderer(const RadiosityPipeline& pipeline, bool o
         reinterpret_cast<const std::uint32_t*>(display.triangles.data()), display.triangles.size() * 3);
     renderer_.upload_geometry(display.positions, triangles,
                               outline ? patch_outline(display) : std::vector<std::uint32_t>{});
+    renderer_.upload_textures(display.texcoords, display.textured);
     refresh_colours();
 }
 

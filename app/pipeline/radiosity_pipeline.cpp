@@ -4,6 +4,7 @@
 #include <string>
 
 #include "pipeline/form_factor_options.hpp"
+#include "rad/mesh/patch_albedo.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
 
@@ -234,8 +235,16 @@ void RadiosityPipeline::restart_solver(SolverMethod method, const SolverOptions&
 }
 
 const DisplayMesh& RadiosityPipeline::display() const {
-    if (!display_) display_.emplace(build_display_mesh(patches(), options_.display));
+    if (!display_) display_.emplace(build_display_mesh(patches(), options_.display, display_texturing()));
     return *display_;
+}
+
+DisplayTexturing RadiosityPipeline::display_texturing() const {
+    if (built_.transport) return {&loaded_.scene, built_.transport->reflectance};
+    if (saved_) return {&loaded_.scene, saved_->reflectance};
+    if (loaded_albedo_.size() != loaded_.patches.size())
+        loaded_albedo_ = patch_albedo(loaded_.scene, loaded_.patches);
+    return {&loaded_.scene, loaded_albedo_};
 }
 
 EnergyBalance RadiosityPipeline::energy_balance() const {

@@ -85,6 +85,10 @@ class RadiosityPipeline {
     Subdivision subdivision() const { return subdivision_; }
     // Built on first use, so `solve` never pays for it.
     const DisplayMesh& display() const;
+    // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the
+    // transport's after prepare, the saved one, or else the patches' mean albedo, which uniform transport
+    // will use).
+    DisplayTexturing display_texturing() const;
     // After prepare.
     const Transport& transport() const { return *built_.transport; }
     const Solver& solver() const { return *solver_; }
@@ -119,6 +123,8 @@ class RadiosityPipeline {
     LoadedScene loaded_;
     SceneTransport built_;
     mutable std::optional<DisplayMesh> display_;  // of patches(), once asked for
+    mutable std::vector<glm::dvec3>
+        loaded_albedo_;  // of loaded_.patches, for display_texturing before prepare
     SolverMethod method_;
     SolverOptions solver_options_;
     std::unique_ptr<Solver> solver_;

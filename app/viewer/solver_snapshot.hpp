@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "pipeline/radiosity_pipeline.hpp"
+#include "rad/display/display_mesh.hpp"
 #include "rad/scene/scene.hpp"
 #include "rad/solve/solver.hpp"
 
@@ -19,6 +21,8 @@ struct ViewerGeometry {
     std::vector<glm::vec3> positions;
     std::vector<std::uint32_t> triangles;  // three indices per triangle
     std::vector<std::uint32_t> outline;    // two indices per patch edge
+    std::vector<glm::vec2> texcoords;      // per vertex where any surface is textured
+    std::vector<DisplayMesh::TexturedRange> textured;
     BoundingBox bounds;
     Camera scene_camera;
     std::uint64_t scene_version =

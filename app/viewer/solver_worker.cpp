@@ -230,7 +230,7 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     saved_options_ = std::move(saved_options);
     remesh_unavailable_ = saved_options_ ? missing_scene(saved_options_->scene.scene) : std::string();
     ++opened_;
-    display_ = build_display_mesh(pipeline_->patches(), options_.display);
+    display_ = build_display_mesh(pipeline_->patches(), options_.display, pipeline_->display_texturing());
     start_bounce_history();
     set_can_step(false);
     publish(true, saved);
@@ -245,7 +245,7 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     // A saved solution's rebuilt elements were checked to be the saved ones, which are drawn already.
     if (!saved && &pipeline_->patches() != &pipeline_->loaded().patches) {
         // The transport's elements are new patches (adaptive or hierarchical leaves): new geometry to draw.
-        display_ = build_display_mesh(pipeline_->patches(), options_.display);
+        display_ = build_display_mesh(pipeline_->patches(), options_.display, pipeline_->display_texturing());
         publish(true, false);
     }
     if (!saved) {
@@ -302,7 +302,7 @@ void SolverWorker::take_step() {
 void SolverWorker::switch_colour_mode(ColourMode mode) {
     if (!pipeline_ || options_.display.mode == mode) return;
     options_.display.mode = mode;
-    display_ = build_display_mesh(pipeline_->patches(), options_.display);
+    display_ = build_display_mesh(pipeline_->patches(), options_.display, pipeline_->display_texturing());
     for (std::size_t i = 0; i < bounce_history_.size(); ++i) {
         vertex_bounces_[i] =
             std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce_history_[i]));
@@ -342,6 +342,8 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
         const auto* first = reinterpret_cast<const std::uint32_t*>(display_.triangles.data());
         geometry->triangles.assign(first, first + display_.triangles.size() * 3);
         geometry->outline = patch_outline(display_);
+        geometry->texcoords = display_.texcoords;
+        geometry->textured = display_.textured;
         geometry->bounds = bounding_box(pipeline_->loaded().scene);
         geometry->scene_camera = scene_camera(pipeline_->loaded().scene);
         geometry->scene_version = scene_version_;

@@ -105,6 +105,7 @@ void Viewer::take_worker_results(const SolverSnapshot& snapshot) {
     if (snapshot.geometry && snapshot.geometry != geometry_) {
         const ViewerGeometry& geometry = *snapshot.geometry;
         renderer_.upload_geometry(geometry.positions, geometry.triangles, geometry.outline);
+        renderer_.upload_textures(geometry.texcoords, geometry.textured);
         geometry_ = snapshot.geometry;
         new_geometry = true;
         if (!camera_ || geometry.scene_version != scene_version_) {

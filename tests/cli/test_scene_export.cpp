@@ -185,6 +185,46 @@ TEST_P(GltfExport, RoundTripKeepsEveryValueAndDeclaresTheUnlitMaterial) {
 INSTANTIATE_TEST_SUITE_P(Formats, GltfExport, ::testing::Values(".gltf", ".glb"),
                          [](const auto& info) { return info.param.substr(1); });
 
+// A textured floor: the glTF keeps the texels (a primitive of its own with TEXCOORD_0 and the albedo as an
+// embedded PNG, times COLOR_0, the irradiance / π its vertices carry); PLY, one colour per vertex, holds the
+// radiance at each vertex (the texel under it times its irradiance). Both carry that radiance as floats.
+TEST(SceneExport, ATexturedFloorKeepsItsTexelsInGltfAndItsVertexRadianceInPly) {
+    PipelineOptions options;
+    options.scene.scene = std::string(RAD_SOURCE_DIR) + "/assets/hard/textured_floor.obj";
+    options.scene.patch_size = 0.125;
+    const Solved solved = solve(options);
+    const DisplayMesh& display = solved.display();
+    ASSERT_EQ(display.textured.size(), 1u);
+    const std::vector<glm::vec3> shown = vertex_shown_radiance(display, solved.radiance);
+    const test::TempDir dir;
+    for (const char* name : {"floor.glb", "floor.ply"}) {
+        const std::filesystem::path path = dir.path() / name;
+        export_scene(path, display, solved.radiance, {.exposure = kExposure});
+        tinygltf::Model model;
+        const ExportedMesh exported = path.extension() == ".glb"
+                                          ? test::read_gltf_export(path.string(), &model)
+                                          : test::read_ply_export(path.string());
+        expect_same_corners(exported, display, shown);
+        if (path.extension() != ".glb") continue;
+        ASSERT_EQ(model.meshes[0].primitives.size(), 2u);  // the floor, then the rest
+        const tinygltf::Primitive& floor = model.meshes[0].primitives[0];
+        EXPECT_EQ(floor.attributes.count("TEXCOORD_0"), 1u);
+        const tinygltf::Material& material = model.materials.at(static_cast<std::size_t>(floor.material));
+        ASSERT_EQ(material.pbrMetallicRoughness.baseColorTexture.index, 0);
+        ASSERT_EQ(model.images.size(), 1u);
+        // tinygltf decoded the embedded PNG: the albedo, 0.8 on the white half (sRGB 231) and 0 on the
+        // black one.
+        const tinygltf::Image& image = model.images[0];
+        ASSERT_EQ(image.width, 16);
+        ASSERT_EQ(image.component, 4);
+        EXPECT_EQ(image.image[(4 * 16 + 2) * 4], srgb_byte(0.8f));
+        EXPECT_EQ(image.image[(4 * 16 + 12) * 4], 0);
+        // A floor vertex's COLOR_0 is its irradiance / π at the exposure, which the albedo multiplies.
+        const std::uint32_t v = display.triangles[display.textured[0].first_triangle][0];
+        EXPECT_EQ(exported.colours[v], expected_colour(solved.radiance[v]));
+    }
+}
+
 TEST(SceneExport, CornellRedWallIsRed) {
     const Solved& solved = cornell();
     const RadiosityPipeline& pipeline = *solved.pipeline;

@@ -16,6 +16,7 @@
 #include "rad/scene/scene_loader.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/srgb.hpp"
+#include "scene/face_texcoords.hpp"
 #include "test_support.hpp"
 
 // The shared library exports it; tiny_gltf.h declares it only in its implementation part.
@@ -205,6 +206,40 @@ TEST(GltfLoader, ATextureCountsAsItsMeanInLinearSpace) {
     const Scene broken = load_scene(write_gltf(dir, doc));
     expect_near(broken.surfaces[0].material.reflectance, glm::dvec3(0.5));
     EXPECT_TRUE(has_warning(broken, "images[0]: not used")) << broken.warnings.size();
+}
+
+// TEXCOORD_0 goes with the base colour texture to the surface's faces, as glTF writes it (v = 0 at the
+// image's top, no flip); a textured primitive without it, or with a count that differs, is a warning or an
+// error naming the accessor.
+TEST(GltfLoader, TextureCoordinatesFollowTheBaseColourTexture) {
+    TempDir dir;
+    write_image((dir.path() / "tex.png").string(), filled_image(2, 2, glm::vec3(0.5f)));
+    json doc = triangle();
+    doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    doc["textures"] = {{{"source", 0}}};
+    doc["images"] = {{{"uri", "tex.png"}}};
+    doc["meshes"][0]["primitives"][0]["material"] = 0;
+    const Scene untextured = load_scene(write_gltf(dir, doc));
+    EXPECT_TRUE(has_warning(untextured, "1 textured primitive(s) have no texture coordinates"));
+    EXPECT_FALSE(is_textured(untextured.surfaces[0]));
+
+    const std::string uv = bytes_of({0.1f, 0.2f, 0.9f, 0.2f, 0.1f, 0.8f});
+    doc["buffers"].push_back({{"byteLength", uv.size()}, {"uri", data_uri(uv)}});
+    doc["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 0}, {"byteLength", uv.size()}});
+    doc["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
+    doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2;
+    const Scene scene = load_scene(write_gltf(dir, doc));
+    ASSERT_TRUE(is_textured(scene.surfaces[0]));
+    const glm::dvec2 at_x = texcoord_at(scene.surfaces[0].mesh, SurfaceMesh::FaceHandle(0), {1, 0, 0});
+    EXPECT_NEAR(at_x.x, 0.9, 1e-6);
+    EXPECT_NEAR(at_x.y, 0.2, 1e-6);
+    const glm::dvec2 inside = texcoord_at(scene.surfaces[0].mesh, SurfaceMesh::FaceHandle(0), {0.25, 0.5, 0});
+    EXPECT_NEAR(inside.x, 0.1 + 0.25 * 0.8, 1e-6);
+    EXPECT_NEAR(inside.y, 0.2 + 0.5 * 0.6, 1e-6);
+
+    doc["accessors"][2]["count"] = 2;
+    test::expect_input_error([](const std::string& path) { load_scene(path); }, write_gltf(dir, doc),
+                             {"s.gltf", "accessors[2]: 2 texture coordinates for 3 positions"});
 }
 
 // An image stored in a buffer view (as a .glb holds its images) is decoded after the view is checked.

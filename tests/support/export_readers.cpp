@@ -111,19 +111,24 @@ ExportedMesh read_gltf_export(const std::string& path, tinygltf::Model* model_ou
     const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
                                : loader.LoadASCIIFromFile(&model, &error, &warning, path);
     if (!loaded || !error.empty()) throw std::runtime_error(path + ": tinygltf cannot load it: " + error);
-    if (model.meshes.size() != 1 || model.meshes[0].primitives.size() != 1) {
-        throw std::runtime_error(path + ": not one mesh of one primitive");
+    if (model.meshes.size() != 1 || model.meshes[0].primitives.empty()) {
+        throw std::runtime_error(path + ": not one mesh with primitives");
     }
-    const tinygltf::Primitive& primitive = model.meshes[0].primitives[0];
+    const std::vector<tinygltf::Primitive>& primitives = model.meshes[0].primitives;
+    const tinygltf::Primitive& primitive = primitives[0];
     ExportedMesh exported;
     exported.positions = vec3_attribute(model, primitive, "POSITION");
     exported.normals = vec3_attribute(model, primitive, "NORMAL");
     exported.colours = vec3_attribute(model, primitive, "COLOR_0");
     exported.radiance = vec3_attribute(model, primitive, "_RADIANCE");
-    const std::vector<std::uint32_t> indices = accessor_values<std::uint32_t>(
-        model, primitive.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
-    for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
-        exported.triangles.emplace_back(indices[i], indices[i + 1], indices[i + 2]);
+    for (const tinygltf::Primitive& p : primitives) {
+        if (p.attributes != primitive.attributes)
+            throw std::runtime_error(path + ": primitives that do not share their vertices");
+        const std::vector<std::uint32_t> indices = accessor_values<std::uint32_t>(
+            model, p.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
+        for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+            exported.triangles.emplace_back(indices[i], indices[i + 1], indices[i + 2]);
+        }
     }
     if (model_out) *model_out = std::move(model);
     return exported;

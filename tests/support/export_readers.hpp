@@ -22,7 +22,8 @@ struct ExportedMesh {
 
 // Throws std::runtime_error saying what is missing or malformed.
 ExportedMesh read_ply_export(const std::string& path);
-// .gltf or .glb by the extension; `model` (if given) receives the whole document.
+// .gltf or .glb by the extension: one mesh whose primitives share their vertices, triangles in primitive
+// order; `model` (if given) receives the whole document.
 ExportedMesh read_gltf_export(const std::string& path, tinygltf::Model* model = nullptr);
 
 }  // namespace rad::test

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <limits>
 #include <numbers>
 #include <span>
 #include <stdexcept>
 
 #include "display/patch_gradients.hpp"
+#include "display/patch_texturing.hpp"
 
 namespace rad {
 
@@ -29,10 +32,11 @@ void add_triangles(const PatchMesh& mesh, std::size_t q, const std::uint32_t* ve
 }
 
 // Appends a vertex that shows patch q's own value; returns its index.
-std::uint32_t add_patch_vertex(const glm::vec3& position, const glm::vec3& normal, std::uint32_t q,
-                               DisplayMesh& display) {
+std::uint32_t add_patch_vertex(const glm::dvec3& position, const glm::vec3& normal, std::uint32_t q,
+                               const PatchTexturing& texturing, DisplayMesh& display) {
     const auto vertex = static_cast<std::uint32_t>(display.positions.size());
-    display.positions.push_back(position);
+    if (texturing.any()) display.texcoords.push_back(texturing.texcoord(q, position));
+    display.positions.emplace_back(position);
     display.normals.push_back(normal);
     display.weight_patch.push_back(q);
     display.weight.push_back(1.0f);
@@ -44,10 +48,10 @@ std::uint32_t add_patch_vertex(const glm::vec3& position, const glm::vec3& norma
 // counter-clockwise), so its triangles meet its smaller neighbours' at those points: no crack in geometry
 // or colour. The centre shows the patch's own value, which is also what its gradient gives there.
 void add_fan(const PatchMesh& mesh, std::size_t q, std::span<const std::uint32_t> vertex,
-             DisplayMesh& display) {
+             const PatchTexturing& texturing, DisplayMesh& display) {
     const auto patch = static_cast<std::uint32_t>(q);
-    const std::uint32_t centre = add_patch_vertex(glm::vec3(mesh.patches[q].centroid),
-                                                  glm::vec3(mesh.patches[q].normal), patch, display);
+    const std::uint32_t centre = add_patch_vertex(mesh.patches[q].centroid, glm::vec3(mesh.patches[q].normal),
+                                                  patch, texturing, display);
     for (std::size_t k = 0; k < vertex.size(); ++k) {
         display.triangles.emplace_back(centre, vertex[k], vertex[(k + 1) % vertex.size()]);
         display.triangle_patch.push_back(patch);
@@ -56,14 +60,13 @@ void add_fan(const PatchMesh& mesh, std::size_t q, std::span<const std::uint32_t
 
 // Flat mode ignores outlines: each patch shows its own constant value, so a T-vertex cannot open a crack
 // in colour, and its corners alone cover it.
-DisplayMesh build_flat(const PatchMesh& mesh) {
+DisplayMesh build_flat(const PatchMesh& mesh, const PatchTexturing& texturing) {
     DisplayMesh display;
     for (std::size_t q = 0; q < mesh.size(); ++q) {
         std::uint32_t vertex[4];
         for (int k = 0; k < mesh.corner_count(q); ++k) {
-            vertex[k] =
-                add_patch_vertex(mesh.positions[mesh.corners[q][k]], glm::vec3(mesh.patches[q].normal),
-                                 static_cast<std::uint32_t>(q), display);
+            vertex[k] = add_patch_vertex(mesh.points[mesh.corners[q][k]], glm::vec3(mesh.patches[q].normal),
+                                         static_cast<std::uint32_t>(q), texturing, display);
         }
         add_triangles(mesh, q, vertex, display);
     }
@@ -74,8 +77,9 @@ DisplayMesh build_flat(const PatchMesh& mesh) {
 class CornerSplitter {
   public:
     // `gradients`: one row per patch for linear reconstruction, or none for the area-weighted average.
-    CornerSplitter(const PatchMesh& mesh, double cos_crease, PatchGradients gradients)
-        : mesh_(mesh), cos_crease_(cos_crease), gradients_(std::move(gradients)) {}
+    CornerSplitter(const PatchMesh& mesh, double cos_crease, PatchGradients gradients,
+                   const PatchTexturing& texturing)
+        : mesh_(mesh), cos_crease_(cos_crease), gradients_(std::move(gradients)), texturing_(texturing) {}
 
     // Groups the patches at `point` and appends one display vertex per group; returns each patch's vertex.
     void split(std::uint32_t point, std::span<const std::uint32_t> patches, DisplayMesh& display,
@@ -85,13 +89,12 @@ class CornerSplitter {
         vertex_of_patch.resize(patches.size());
         for (std::size_t a = 0; a < patches.size(); ++a) {
             const Patch& patch = mesh_.patches[patches[a]];
+            const Group mine{patch.surface, patch.normal, texturing_.textured(patches[a]),
+                             texturing_.texcoord(patches[a], mesh_.points[point])};
             std::size_t g = 0;
             // Compare with each group's first patch, so a group cannot creep round a curve past the angle.
-            while (g < groups_.size() && !(groups_[g].surface == patch.surface &&
-                                           glm::dot(groups_[g].normal, patch.normal) >= cos_crease_)) {
-                ++g;
-            }
-            if (g == groups_.size()) groups_.push_back({patch.surface, patch.normal});
+            while (g < groups_.size() && !joins(groups_[g], mine)) ++g;
+            if (g == groups_.size()) groups_.push_back(mine);
             group_of_[a] = g;
         }
         for (std::size_t g = 0; g < groups_.size(); ++g)
@@ -102,7 +105,17 @@ class CornerSplitter {
     struct Group {
         std::uint32_t surface;
         glm::dvec3 normal;
+        bool textured;
+        glm::vec2 texcoord;  // faces meeting at a texture seam keep vertices of their own
     };
+
+    bool joins(const Group& group, const Group& patch) const {
+        constexpr float kSameTexcoord = 1e-5f;
+        return group.surface == patch.surface && glm::dot(group.normal, patch.normal) >= cos_crease_ &&
+               group.textured == patch.textured &&
+               glm::all(
+                   glm::lessThanEqual(glm::abs(group.texcoord - patch.texcoord), glm::vec2(kSameTexcoord)));
+    }
 
     // The vertex of the patches in group g (those a with group_of_[a] == g).
     void add_vertex(std::uint32_t point, std::span<const std::uint32_t> patches, std::size_t g,
@@ -132,6 +145,7 @@ class CornerSplitter {
         }
         display.weight_begin.push_back(static_cast<std::uint32_t>(display.weight.size()));
         display.positions.push_back(mesh_.positions[point]);
+        if (texturing_.any()) display.texcoords.push_back(groups_[g].texcoord);
         display.normals.emplace_back(glm::length(normal) > 0.0 ? glm::normalize(normal) : groups_[g].normal);
     }
 
@@ -150,6 +164,7 @@ class CornerSplitter {
     const PatchMesh& mesh_;
     double cos_crease_;
     PatchGradients gradients_;
+    const PatchTexturing& texturing_;
     std::vector<Group> groups_;
     std::vector<std::size_t> group_of_;  // per patch at the point, its group
     std::vector<std::pair<std::uint32_t, double>> weights_;
@@ -160,13 +175,15 @@ std::size_t boundary_start(const PatchMesh& mesh, std::size_t q) {
     return mesh.outline_begin.empty() ? 4 * q : mesh.outline_begin[q];
 }
 
-DisplayMesh build_smooth(const PatchMesh& mesh, double crease_angle_degrees, Reconstruction reconstruction) {
+DisplayMesh build_smooth(const PatchMesh& mesh, double crease_angle_degrees, Reconstruction reconstruction,
+                         const PatchTexturing& texturing) {
     const PointPatches at = patches_at_points(mesh);
     DisplayMesh display;
     const double cos_crease = std::cos(crease_angle_degrees * std::numbers::pi / 180.0);
     CornerSplitter splitter(
         mesh, cos_crease,
-        reconstruction == Reconstruction::linear ? patch_gradients(mesh, at, cos_crease) : PatchGradients{});
+        reconstruction == Reconstruction::linear ? patch_gradients(mesh, at, cos_crease) : PatchGradients{},
+        texturing);
     // The display vertex of each point on each patch's boundary, from boundary_start.
     std::vector<std::uint32_t> boundary_vertex(mesh.outline_begin.empty() ? 4 * mesh.size()
                                                                           : mesh.outline.size());
@@ -186,7 +203,7 @@ DisplayMesh build_smooth(const PatchMesh& mesh, double crease_angle_degrees, Rec
         const std::span<const std::uint32_t> vertex(boundary_vertex.data() + boundary_start(mesh, q),
                                                     patch_boundary(mesh, q).size());
         if (vertex.size() > static_cast<std::size_t>(mesh.corner_count(q)))
-            add_fan(mesh, q, vertex, display);
+            add_fan(mesh, q, vertex, texturing, display);
         else
             add_triangles(mesh, q, vertex.data(), display);
     }
@@ -195,14 +212,18 @@ DisplayMesh build_smooth(const PatchMesh& mesh, double crease_angle_degrees, Rec
 
 }  // namespace
 
-DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& options) {
+DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& options,
+                               const DisplayTexturing& texturing) {
     if (!(options.crease_angle_degrees >= 0.0 && options.crease_angle_degrees <= 180.0)) {
         throw std::invalid_argument("crease angle must lie in [0°, 180°]");
     }
-    DisplayMesh display = options.mode == ColourMode::flat
-                              ? build_flat(patches)
-                              : build_smooth(patches, options.crease_angle_degrees, options.reconstruction);
+    const PatchTexturing textures(patches, texturing);
+    DisplayMesh display =
+        options.mode == ColourMode::flat
+            ? build_flat(patches, textures)
+            : build_smooth(patches, options.crease_angle_degrees, options.reconstruction, textures);
     display.patch_count = patches.size();
+    textures.finish(display);
     return display;
 }
 
@@ -213,6 +234,16 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
     }
     if (radiosity.size() != display.patch_count) {
         throw std::invalid_argument("vertex_radiance: the radiosity does not have one entry per patch");
+    }
+    // A textured patch contributes the irradiance it receives, which the pixel multiplies by its albedo.
+    std::vector<glm::dvec3> irradiance;
+    if (!display.patch_irradiance.empty()) {
+        irradiance.assign(radiosity.begin(), radiosity.end());
+        for (std::size_t q = 0; q < irradiance.size(); ++q) {
+            const DisplayMesh::PatchIrradiance& p = display.patch_irradiance[q];
+            if (p.textured) irradiance[q] = glm::max(irradiance[q] - p.emission, 0.0) * p.inverse_albedo;
+        }
+        radiosity = irradiance;
     }
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) {

@@ -80,7 +80,9 @@ void export_scene(const std::filesystem::path& path, const DisplayMesh& mesh,
     }
     check_export_input(path, mesh, radiance, options);
     replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
-        if (*format == ExportFormat::ply) write_ply_export(temporary, mesh, radiance, options);
+        // One colour per vertex: a textured vertex takes the texel under it.
+        if (*format == ExportFormat::ply)
+            write_ply_export(temporary, mesh, vertex_shown_radiance(mesh, radiance), options);
         if (*format != ExportFormat::ply) {
             write_gltf_export(temporary, mesh, radiance, options, *format == ExportFormat::glb);
         }

@@ -1,5 +1,6 @@
 // The glTF 2.0 export, written by tinygltf (Debian's shared library, which holds its implementation): one
-// buffer, one mesh of one triangle primitive, one node, an unlit material.
+// buffer, one mesh of triangle primitives (one per textured range, one for the rest), one node, unlit
+// materials.
 #include <tiny_gltf.h>
 
 #include <cstring>
@@ -10,7 +11,10 @@
 #include <string>
 #include <vector>
 
+#include <stb_image_write.h>
+
 #include "rad/io/scene_export.hpp"
+#include "rad/util/srgb.hpp"
 
 namespace rad {
 
@@ -28,20 +32,31 @@ class GltfBuilder {
         std::vector<glm::vec3> shown(radiance.size());
         for (std::size_t v = 0; v < radiance.size(); ++v) shown[v] = displayed_value(radiance[v], exposure);
 
-        tinygltf::Primitive primitive;
-        primitive.mode = TINYGLTF_MODE_TRIANGLES;
-        primitive.attributes["POSITION"] = add_positions(mesh.positions);
-        primitive.attributes["NORMAL"] = add_vectors(mesh.normals);
-        primitive.attributes["COLOR_0"] = add_vectors(shown);
+        // Every primitive shares the vertices; each textured range is a primitive of its own, whose COLOR_0
+        // (the irradiance / π its vertices carry) the viewer multiplies by the texture's albedo.
+        tinygltf::Primitive shared;
+        shared.mode = TINYGLTF_MODE_TRIANGLES;
+        shared.attributes["POSITION"] = add_positions(mesh.positions);
+        shared.attributes["NORMAL"] = add_vectors(mesh.normals);
+        shared.attributes["COLOR_0"] = add_vectors(shown);
         // An application-specific attribute (leading underscore, as the specification asks): viewers ignore
-        // it, tools that want the physical values read it.
-        primitive.attributes["_RADIANCE"] = add_vectors(radiance);
-        primitive.indices = add_indices(mesh.triangles);
-        primitive.material = add_unlit_material();
+        // it, tools that want the physical values read it. For a textured vertex, the radiance at the vertex.
+        shared.attributes["_RADIANCE"] = add_vectors(vertex_shown_radiance(mesh, radiance));
+        if (!mesh.textured.empty()) shared.attributes["TEXCOORD_0"] = add_texcoords(mesh.texcoords);
 
         tinygltf::Mesh gltf_mesh;
         gltf_mesh.name = "radiosity";
-        gltf_mesh.primitives.push_back(std::move(primitive));
+        std::size_t next = 0;
+        const std::span<const glm::uvec3> triangles(mesh.triangles);
+        for (const DisplayMesh::TexturedRange& range : mesh.textured) {
+            if (range.first_triangle > next)
+                add_primitive(shared, triangles.subspan(next, range.first_triangle - next), untextured(),
+                              gltf_mesh);
+            add_primitive(shared, triangles.subspan(range.first_triangle, range.triangle_count),
+                          textured_material(range), gltf_mesh);
+            next = range.first_triangle + range.triangle_count;
+        }
+        if (next < triangles.size()) add_primitive(shared, triangles.subspan(next), untextured(), gltf_mesh);
         model_.meshes.push_back(std::move(gltf_mesh));
         tinygltf::Node node;
         node.mesh = 0;
@@ -54,6 +69,52 @@ class GltfBuilder {
     }
 
   private:
+    void add_primitive(const tinygltf::Primitive& shared, std::span<const glm::uvec3> triangles, int material,
+                       tinygltf::Mesh& mesh) {
+        tinygltf::Primitive primitive = shared;
+        primitive.indices = add_indices(triangles);
+        primitive.material = material;
+        mesh.primitives.push_back(std::move(primitive));
+    }
+
+    int untextured() {
+        if (untextured_ < 0) untextured_ = add_unlit_material("radiosity unlit", -1);
+        return untextured_;
+    }
+
+    // The range's texture as an image of albedo (the texel times the range's scale, at most 1 as the
+    // material's factor is), so an unlit viewer's base colour × COLOR_0 is the radiance shown.
+    int textured_material(const DisplayMesh::TexturedRange& range) {
+        const Texture& t = *range.texture;
+        std::vector<unsigned char> albedo(t.srgb.size());
+        for (std::size_t i = 0; i < albedo.size(); ++i)
+            albedo[i] = srgb_byte(range.albedo_scale[static_cast<int>(i % 3)] *
+                                  static_cast<float>(srgb_byte_to_linear(t.srgb[i])));
+        std::vector<unsigned char> png;
+        stbi_write_png_to_func(
+            [](void* context, void* data, int size) {
+                auto* out = static_cast<std::vector<unsigned char>*>(context);
+                out->insert(out->end(), static_cast<unsigned char*>(data),
+                            static_cast<unsigned char*>(data) + size);
+            },
+            &png, t.width, t.height, 3, albedo.data(), t.width * 3);
+        if (png.empty()) throw std::runtime_error("cannot encode texture " + t.name + " as PNG");
+        tinygltf::Image image;
+        image.name = t.name;
+        image.mimeType = "image/png";
+        image.bufferView = add_view(png.data(), png.size(), 0);
+        model_.images.push_back(std::move(image));
+        tinygltf::Texture texture;
+        texture.source = static_cast<int>(model_.images.size() - 1);
+        model_.textures.push_back(texture);
+        return add_unlit_material("radiosity unlit " + t.name, static_cast<int>(model_.textures.size() - 1));
+    }
+
+    int add_texcoords(std::span<const glm::vec2> values) {
+        const int view = add_view(values.data(), values.size_bytes(), TINYGLTF_TARGET_ARRAY_BUFFER);
+        return add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, values.size());
+    }
+
     // Appends the bytes as a buffer view of their own; returns the view's index.
     int add_view(const void* data, std::size_t bytes, int target) {
         std::vector<unsigned char>& buffer = model_.buffers[0].data;
@@ -61,7 +122,7 @@ class GltfBuilder {
         view.buffer = 0;
         view.byteOffset = buffer.size();
         view.byteLength = bytes;
-        view.target = target;
+        view.target = target;  // 0 for an image
         buffer.resize(buffer.size() + bytes);
         std::memcpy(buffer.data() + view.byteOffset, data, bytes);
         model_.bufferViews.push_back(view);
@@ -107,19 +168,21 @@ class GltfBuilder {
 
     // Unlit, so viewers show COLOR_0 as it is instead of shading it again; the metallic-roughness values are
     // the extension's recommended fallback for viewers without it. One-sided, as the scene's surfaces are.
-    int add_unlit_material() {
+    int add_unlit_material(const std::string& name, int texture) {
         tinygltf::Material material;
-        material.name = "radiosity unlit";
+        material.name = name;
         material.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
+        material.pbrMetallicRoughness.baseColorTexture.index = texture;
         material.pbrMetallicRoughness.metallicFactor = 0.0;
         material.pbrMetallicRoughness.roughnessFactor = 1.0;
         material.extensions[kUnlit] = tinygltf::Value(tinygltf::Value::Object());
         model_.materials.push_back(std::move(material));
-        model_.extensionsUsed.push_back(kUnlit);
+        if (model_.extensionsUsed.empty()) model_.extensionsUsed.push_back(kUnlit);
         return static_cast<int>(model_.materials.size() - 1);
     }
 
     tinygltf::Model model_;
+    int untextured_ = -1;
 };
 
 }  // namespace

@@ -46,6 +46,7 @@ void ElementTree::add_child(std::uint32_t parent, const glm::uvec4& corners) {
     child.base_patch = p.base_patch;
     child.level = p.level + 1;
     child.shape = measure_patch(points_, corners, p.shape.surface, p.shape.normal);
+    child.shape.face = p.shape.face;
     elements_.push_back(child);
 }
 

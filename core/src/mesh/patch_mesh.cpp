@@ -23,6 +23,7 @@ struct Element {
     std::array<std::uint32_t, 4> edge{};  // edge[i] joins v[i] and v[(i + 1) % count]
     int count = 3;
     glm::dvec3 normal{0.0};
+    std::uint32_t face = 0;  // in the surface's mesh
 };
 
 // One surface's faces as elements, and how many segments each edge is cut into. Opposite edges of a quad
@@ -83,8 +84,9 @@ class LayoutBuilder {
             points.push_back(layout_.vertex[corners.back()]);
         }
         const glm::dvec3 normal = glm::normalize(newell_normal(points));
+        const auto face = static_cast<std::uint32_t>(f.idx());
         if (corners.size() <= 4) {
-            add_element(corners, normal);
+            add_element(corners, normal, face);
             return;
         }
         glm::dvec3 centre(0.0);
@@ -92,14 +94,16 @@ class LayoutBuilder {
         layout_.vertex.push_back(centre / static_cast<double>(points.size()));
         const auto c = static_cast<std::uint32_t>(layout_.vertex.size() - 1);
         for (std::size_t i = 0; i < corners.size(); ++i) {
-            add_element({corners[i], corners[(i + 1) % corners.size()], c}, normal);
+            add_element({corners[i], corners[(i + 1) % corners.size()], c}, normal, face);
         }
     }
 
-    void add_element(const std::vector<std::uint32_t>& corners, const glm::dvec3& normal) {
+    void add_element(const std::vector<std::uint32_t>& corners, const glm::dvec3& normal,
+                     std::uint32_t face) {
         Element e;
         e.count = static_cast<int>(corners.size());
         e.normal = normal;
+        e.face = face;
         for (int i = 0; i < e.count; ++i) {
             e.v[i] = corners[i];
             e.edge[i] = edge_between(corners[i], corners[(i + 1) % e.count]);
@@ -214,7 +218,7 @@ class SurfaceGridder {
         }
         for (std::uint32_t j = 0; j < m; ++j) {
             for (std::uint32_t i = 0; i < n; ++i) {
-                add_patch({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}, e.normal);
+                add_patch({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}, e);
             }
         }
     }
@@ -243,16 +247,16 @@ class SurfaceGridder {
         }
         for (std::uint32_t j = 0; j < n; ++j) {
             for (std::uint32_t i = 0; i + j < n; ++i) {
-                add_patch({at(i, j), at(i + 1, j), at(i, j + 1), at(i, j + 1)}, e.normal);
-                if (i + j + 1 < n)
-                    add_patch({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), at(i, j + 1)}, e.normal);
+                add_patch({at(i, j), at(i + 1, j), at(i, j + 1), at(i, j + 1)}, e);
+                if (i + j + 1 < n) add_patch({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), at(i, j + 1)}, e);
             }
         }
     }
 
-    void add_patch(const glm::uvec4& c, const glm::dvec3& normal) {
+    void add_patch(const glm::uvec4& c, const Element& e) {
         out_.corners.push_back(c);
-        out_.patches.push_back(measure_patch(out_.points, c, surface_, normal));
+        out_.patches.push_back(measure_patch(out_.points, c, surface_, e.normal));
+        out_.patches.back().face = e.face;
     }
 
     const SurfaceLayout& layout_;

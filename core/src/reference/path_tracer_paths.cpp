@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "rad/mesh/patch_albedo.hpp"
 #include "reference/path_tracer_paths.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 
@@ -38,7 +39,7 @@ PathContext::PathContext(const Scene& scene, const PatchMesh& patches, const Pat
     : patches_(patches),
       options_(options),
       ray_scene_(patches),
-      reflectance_(per_patch(scene, patches, [](const Material& m) { return m.reflectance; })),
+      reflectance_(patch_albedo(scene, patches)),
       emitted_radiance_(per_patch(scene, patches, [](const Material& m) { return m.emission; })),
       emitters_(patches, emitted_radiance_),
       sky_(scene.sky),

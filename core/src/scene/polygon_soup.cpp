@@ -3,6 +3,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 
@@ -17,19 +18,26 @@ namespace {
 // Below this fraction of the scene's squared size a polygon has no area worth a patch.
 constexpr double kZeroAreaFraction = 1e-14;
 
+const SurfaceMesh::TexCoord2D kNoTexcoord(std::numeric_limits<float>::quiet_NaN(),
+                                          std::numeric_limits<float>::quiet_NaN());
+
 // Builds one surface's OpenMesh mesh, sharing vertices between faces where OpenMesh can keep the mesh
 // manifold and giving a face its own copies of the vertices where it cannot.
 class SurfaceBuilder {
   public:
     explicit SurfaceBuilder(const PolygonSoup& soup) : soup_(soup) {}
 
-    void add_face(const std::vector<std::uint32_t>& soup_vertices) {
+    // `uv`: the corners' texture coordinates, or empty.
+    void add_face(const std::vector<std::uint32_t>& soup_vertices, const std::vector<glm::dvec2>& uv) {
         std::vector<SurfaceMesh::VertexHandle> handles;
         handles.reserve(soup_vertices.size());
         for (std::uint32_t v : soup_vertices) handles.push_back(shared_vertex(v));
-        if (add_quietly(handles)) return;
-        for (std::size_t i = 0; i < handles.size(); ++i) handles[i] = new_vertex(soup_vertices[i]);
-        add_quietly(handles);
+        SurfaceMesh::FaceHandle face = add_quietly(handles);
+        if (!face.is_valid()) {
+            for (std::size_t i = 0; i < handles.size(); ++i) handles[i] = new_vertex(soup_vertices[i]);
+            face = add_quietly(handles);
+        }
+        if (face.is_valid()) set_texcoords(face, handles, uv);
     }
 
     SurfaceMesh take() { return std::move(mesh_); }
@@ -37,11 +45,26 @@ class SurfaceBuilder {
 
   private:
     // OpenMesh reports a non-manifold face on its error stream; we handle it, so keep the terminal clean.
-    bool add_quietly(const std::vector<SurfaceMesh::VertexHandle>& handles) {
+    SurfaceMesh::FaceHandle add_quietly(const std::vector<SurfaceMesh::VertexHandle>& handles) {
         omerr().disable();
-        const bool added = mesh_.add_face(handles).is_valid();
+        const SurfaceMesh::FaceHandle face = mesh_.add_face(handles);
         omerr().enable();
-        return added;
+        return face;
+    }
+    // Texture coordinates live on the halfedges into each corner, so faces meeting at a seam keep their
+    // own. Once a surface has any, a face without them gets NaN, which the display reads as "untextured".
+    void set_texcoords(SurfaceMesh::FaceHandle face, const std::vector<SurfaceMesh::VertexHandle>& handles,
+                       const std::vector<glm::dvec2>& uv) {
+        if (uv.empty() && !mesh_.has_halfedge_texcoords2D()) return;
+        if (!mesh_.has_halfedge_texcoords2D()) {
+            mesh_.request_halfedge_texcoords2D();
+            for (auto h : mesh_.halfedges()) mesh_.set_texcoord2D(h, kNoTexcoord);
+        }
+        for (auto h : mesh_.fh_range(face)) {
+            const auto corner = std::find(handles.begin(), handles.end(), mesh_.to_vertex_handle(h));
+            const auto k = static_cast<std::size_t>(corner - handles.begin());
+            mesh_.set_texcoord2D(h, uv.empty() ? kNoTexcoord : SurfaceMesh::TexCoord2D(uv[k].x, uv[k].y));
+        }
     }
     SurfaceMesh::VertexHandle new_vertex(std::uint32_t v) {
         const glm::dvec3& p = soup_.positions[v];
@@ -58,16 +81,42 @@ class SurfaceBuilder {
     std::unordered_map<std::uint32_t, SurfaceMesh::VertexHandle> shared_;
 };
 
-// Drops repeated consecutive corners (same index or same position), as in "f 1 2 2 3".
+// Which of a polygon's corners remain once repeated consecutive ones (same index or same position, as in
+// "f 1 2 2 3") are dropped: positions in its vertex list.
+std::vector<std::size_t> distinct_corners(const PolygonSoup& soup, const std::vector<std::uint32_t>& in) {
+    std::vector<std::size_t> out;
+    out.reserve(in.size());
+    for (std::size_t k = 0; k < in.size(); ++k) {
+        if (!out.empty() && soup.positions[in[out.back()]] == soup.positions[in[k]]) continue;
+        out.push_back(k);
+    }
+    while (out.size() > 1 && soup.positions[in[out.front()]] == soup.positions[in[out.back()]])
+        out.pop_back();
+    return out;
+}
+
 std::vector<std::uint32_t> without_repeats(const PolygonSoup& soup, const std::vector<std::uint32_t>& in) {
     std::vector<std::uint32_t> out;
-    out.reserve(in.size());
-    for (std::uint32_t v : in) {
-        if (!out.empty() && soup.positions[out.back()] == soup.positions[v]) continue;
-        out.push_back(v);
-    }
-    while (out.size() > 1 && soup.positions[out.front()] == soup.positions[out.back()]) out.pop_back();
+    for (std::size_t k : distinct_corners(soup, in)) out.push_back(in[k]);
     return out;
+}
+
+// A polygon's distinct corners and their texture coordinates (empty where it has none).
+struct Corners {
+    std::vector<std::uint32_t> vertices;
+    std::vector<glm::dvec2> uv;
+};
+
+Corners polygon_corners(const PolygonSoup& soup, const PolygonSoup::Polygon& p) {
+    Corners c;
+    const bool has_uv = p.texcoords.size() == p.vertices.size() &&
+                        std::all_of(p.texcoords.begin(), p.texcoords.end(),
+                                    [&](std::uint32_t t) { return t < soup.texcoords.size(); });
+    for (std::size_t k : distinct_corners(soup, p.vertices)) {
+        c.vertices.push_back(p.vertices[k]);
+        if (has_uv) c.uv.push_back(soup.texcoords[p.texcoords[k]]);
+    }
+    return c;
 }
 
 std::vector<glm::dvec3> corner_positions(const PolygonSoup& soup, const std::vector<std::uint32_t>& idx) {
@@ -173,22 +222,26 @@ struct GroupBuilders {
 
 // Adds the polygon's faces (itself, or its triangles where it is not planar and convex) to `front` and,
 // when `back` is given, the same faces reversed to it.
-void add_polygon(const PolygonSoup& soup, const std::vector<std::uint32_t>& corners, double min_area,
-                 SurfaceBuilder& front, SurfaceBuilder* back) {
-    const auto add = [&](std::vector<std::uint32_t> face) {
-        front.add_face(face);
+void add_polygon(const PolygonSoup& soup, const Corners& corners, double min_area, SurfaceBuilder& front,
+                 SurfaceBuilder* back) {
+    const auto add = [&](std::vector<std::uint32_t> face, std::vector<glm::dvec2> uv) {
+        front.add_face(face, uv);
         if (!back) return;
         std::reverse(face.begin(), face.end());
-        back->add_face(face);
+        std::reverse(uv.begin(), uv.end());
+        back->add_face(face, uv);
     };
-    const std::vector<glm::dvec3> points = corner_positions(soup, corners);
+    const std::vector<glm::dvec3> points = corner_positions(soup, corners.vertices);
     if (is_planar_convex(points)) {
-        add(corners);
+        add(corners.vertices, corners.uv);
         return;
     }
     for (const auto& t : triangulate_polygon(points)) {
-        std::vector<std::uint32_t> tri{corners[t[0]], corners[t[1]], corners[t[2]]};
-        if (polygon_area(corner_positions(soup, tri)) > min_area) add(std::move(tri));
+        std::vector<std::uint32_t> tri{corners.vertices[t[0]], corners.vertices[t[1]],
+                                       corners.vertices[t[2]]};
+        std::vector<glm::dvec2> uv;
+        if (!corners.uv.empty()) uv = {corners.uv[t[0]], corners.uv[t[1]], corners.uv[t[2]]};
+        if (polygon_area(corner_positions(soup, tri)) > min_area) add(std::move(tri), std::move(uv));
     }
 }
 
@@ -225,7 +278,7 @@ Scene build_scene(const PolygonSoup& input) {
     for (const KeptPolygon& polygon : kept) {
         const PolygonSoup::Polygon& p = soup.polygons[polygon.index];
         GroupBuilders& group = builders[p.group];
-        const std::vector<std::uint32_t> corners = without_repeats(soup, p.vertices);
+        const Corners corners = polygon_corners(soup, p);
         if (polygon.paired) {
             add_polygon(soup, corners, min_area, group.front, nullptr);
         } else if (soup.groups[p.group].material.two_sided) {

@@ -1,5 +1,6 @@
 #include "rad/util/srgb.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace rad {
@@ -12,6 +13,18 @@ float srgb_encode(float linear) {
 
 std::uint8_t srgb_byte(float linear) {
     return static_cast<std::uint8_t>(std::lround(255.0f * srgb_encode(linear)));
+}
+
+double srgb_byte_to_linear(std::uint8_t code) {
+    static const std::array<double, 256> table = [] {
+        std::array<double, 256> t{};
+        for (int i = 0; i < 256; ++i) {
+            const double v = i / 255.0;
+            t[i] = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+        }
+        return t;
+    }();
+    return table[code];
 }
 
 }  // namespace rad

@@ -2,11 +2,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/texture.hpp"
 
 namespace rad {
 
@@ -38,9 +41,38 @@ struct DisplayOptions {
     Reconstruction reconstruction = Reconstruction::linear;
 };
 
+// What texel detail needs: the scene the patches were cut from (its textured surfaces) and the reflectance
+// each patch has in the transport (Transport::reflectance, in the patches' order: a textured patch's mean
+// albedo). Without a scene every surface shows its radiosity alone.
+struct DisplayTexturing {
+    const Scene* scene = nullptr;
+    std::span<const glm::dvec3> reflectance;
+};
+
 // The geometry to draw, built once: a renderer uploads positions, normals and triangles once and, after
 // each solver step, only the colours vertex_radiance returns (one per vertex, in the same order).
+//
+// Textured surfaces keep their texel detail: their vertices carry H / π, the irradiance the patches around
+// them receive (from B = E + ρ H with each patch's own mean albedo ρ), and a pixel shows
+// emitted_radiance + albedo_scale · texel · H / π, the texel's albedo times the interpolated irradiance.
+// Other vertices carry the radiance B / π itself.
 struct DisplayMesh {
+    // A run of triangles of one textured surface, drawn with its texture.
+    struct TexturedRange {
+        std::uint32_t first_triangle = 0;
+        std::uint32_t triangle_count = 0;
+        std::shared_ptr<const Texture> texture;
+        glm::vec3 albedo_scale{1.0f};  // a texel's linear colour times this is its albedo
+        glm::vec3 emitted_radiance{0.0f};
+    };
+    // How vertex_radiance turns a textured patch's radiosity into irradiance: (B − emission) ·
+    // inverse_albedo.
+    struct PatchIrradiance {
+        bool textured = false;
+        glm::dvec3 emission{0.0};
+        glm::dvec3 inverse_albedo{0.0};  // 1 / ρ per channel, 0 where ρ is 0
+    };
+
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;             // unit, front side
     std::vector<glm::uvec3> triangles;          // counter-clockwise from the front
@@ -51,16 +83,28 @@ struct DisplayMesh {
     std::vector<std::uint32_t> weight_patch;
     std::vector<float> weight;
     std::size_t patch_count = 0;  // the radiosity vertex_radiance takes has one entry per patch
+    // Per vertex where any surface is textured (else empty); (0, 0) outside the textured ranges.
+    std::vector<glm::vec2> texcoords;
+    std::vector<TexturedRange> textured;            // in triangle order, not overlapping
+    std::vector<PatchIrradiance> patch_irradiance;  // per patch where any is textured, else empty
 
     std::size_t vertex_count() const { return positions.size(); }
 };
 
-DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& options = {});
+// Throws std::invalid_argument for a crease angle outside [0°, 180°] or a reflectance of another size.
+DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& options = {},
+                               const DisplayTexturing& texturing = {});
 
-// Radiance L = B / π per display vertex, from the radiosity B per patch (a Solver's display_solution()).
+// Radiance L = B / π per display vertex (H / π on textured surfaces), from the radiosity B per patch (a
+// Solver's display_solution()).
 // Writes radiance[v] for every vertex; radiance must hold vertex_count() entries.
 void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
                      std::span<glm::vec3> radiance);
 std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity);
+
+// The radiance each vertex itself shows, from what vertex_radiance gave: a textured vertex's value times the
+// albedo at its texture coordinates, plus the surface's emitted radiance; other vertices as they are. What
+// one colour per vertex can hold (a PLY export), without the texels between vertices.
+std::vector<glm::vec3> vertex_shown_radiance(const DisplayMesh& display, std::span<const glm::vec3> radiance);
 
 }  // namespace rad

@@ -13,6 +13,7 @@ namespace rad {
 
 struct Patch {
     std::uint32_t surface = 0;
+    std::uint32_t face = 0;  // the face of the surface's mesh that the patch is part of (for its texture)
     double area = 0.0;
     glm::dvec3 centroid{0.0};
     glm::dvec3 normal{0.0};  // unit, front side

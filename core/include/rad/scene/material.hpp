@@ -1,21 +1,27 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include "rad/scene/texture.hpp"
 
 namespace rad {
 
 // A diffuse material. Reflectance is the albedo ρ per RGB channel, each in [0, 1); emission is the emitted
 // radiance Le per channel (MTL `Ke`), so the emitted radiosity is E = π Le. A one-sided material reflects and
 // emits on its front only (its back blocks light); a two-sided one (glTF `doubleSided`) on both sides, each
-// side with elements of its own.
+// side with elements of its own. A textured material (OBJ `map_Kd`, glTF `baseColorTexture`) has the image's
+// mean as part of its reflectance; the texture's texels vary it over the surface (see albedo_scale), for
+// each patch's mean albedo in the transport and per pixel in the display.
 struct Material {
     std::string name;
     glm::dvec3 reflectance{0.5};
     glm::dvec3 emission{0.0};
     bool two_sided = false;
+    std::shared_ptr<const Texture> texture = nullptr;
 
     bool emits() const { return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0; }
     glm::dvec3 emitted_radiosity() const { return emission * std::numbers::pi; }

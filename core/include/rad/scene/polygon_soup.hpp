@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 #include <vector>
@@ -17,6 +18,8 @@ struct PolygonSoup {
     struct Polygon {
         std::vector<std::uint32_t> vertices;
         std::uint32_t group = 0;
+        // One per vertex, into texcoords; empty where the polygon has none.
+        std::vector<std::uint32_t> texcoords = {};
     };
     struct Group {
         std::string name;
@@ -25,6 +28,8 @@ struct PolygonSoup {
 
     std::string source;
     std::vector<glm::dvec3> positions;
+    // Texture coordinates in glTF's convention (v = 0 at the image's top row).
+    std::vector<glm::dvec2> texcoords;
     std::vector<Polygon> polygons;
     std::vector<Group> groups;
 };

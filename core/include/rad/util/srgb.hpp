@@ -11,4 +11,7 @@ float srgb_encode(float linear);
 // exported vertex colour hold.
 std::uint8_t srgb_byte(float linear);
 
+// The linear value of an 8-bit sRGB code (a texel of a PNG or JPEG), from a table.
+double srgb_byte_to_linear(std::uint8_t code);
+
 }  // namespace rad

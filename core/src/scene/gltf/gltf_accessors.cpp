@@ -147,6 +147,37 @@ std::vector<glm::dvec3> read_positions(const GltfFile& file, int accessor, std::
     return positions;
 }
 
+std::vector<glm::dvec2> read_texcoords(const GltfFile& file, int accessor, std::size_t vertex_count,
+                                       const std::string& where) {
+    const int types[] = {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+    const AccessorBytes bytes = checked_accessor(file, accessor, TINYGLTF_TYPE_VEC2, types, where);
+    if (bytes.count != vertex_count)
+        refuse(file, accessor_name(accessor) + ": " + std::to_string(bytes.count) +
+                         " texture coordinates for " + std::to_string(vertex_count) + " positions");
+    std::vector<glm::dvec2> uv(bytes.count);
+    for (std::size_t i = 0; i < bytes.count; ++i) {
+        const unsigned char* p = bytes.data + i * bytes.stride;
+        for (int c = 0; c < 2; ++c) {
+            if (bytes.element_size == 8) {
+                float v;
+                std::memcpy(&v, p + 4 * c, sizeof v);
+                if (!std::isfinite(v))
+                    refuse(file, accessor_name(accessor) + ": texture coordinate " + std::to_string(i) +
+                                     " is not finite");
+                uv[i][c] = v;
+            } else if (bytes.element_size == 4) {
+                std::uint16_t v;
+                std::memcpy(&v, p + 2 * c, sizeof v);
+                uv[i][c] = v / 65535.0;
+            } else {
+                uv[i][c] = p[c] / 255.0;
+            }
+        }
+    }
+    return uv;
+}
+
 std::vector<std::uint32_t> read_indices(const GltfFile& file, int accessor, std::size_t vertex_count,
                                         std::size_t max_count, const std::string& where) {
     const int types[] = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,

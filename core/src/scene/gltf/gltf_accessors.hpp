@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <span>
 #include <string>
@@ -31,6 +32,11 @@ AccessorBytes checked_accessor(const GltfFile& file, int accessor, int type,
 
 // A POSITION accessor (float VEC3) with at most `max_count` elements, each finite.
 std::vector<glm::dvec3> read_positions(const GltfFile& file, int accessor, std::size_t max_count,
+                                       const std::string& where);
+
+// A TEXCOORD_n accessor (float, or normalized unsigned byte or short, VEC2) of exactly `vertex_count`
+// elements, each finite.
+std::vector<glm::dvec2> read_texcoords(const GltfFile& file, int accessor, std::size_t vertex_count,
                                        const std::string& where);
 
 // An index accessor (unsigned byte, short or int scalars) with at most `max_count` elements, each below

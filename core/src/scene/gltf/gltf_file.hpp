@@ -4,8 +4,11 @@
 
 #include <glm/vec3.hpp>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "rad/scene/texture.hpp"
 
 namespace rad {
 
@@ -13,8 +16,8 @@ namespace rad {
 struct GltfFile {
     std::string path;  // for messages
     tinygltf::Model model;
-    // Per image index: the mean of its texels in linear space, for the images that could be decoded.
-    std::map<int, glm::dvec3> image_means;
+    // Per image index, the images that could be decoded.
+    std::map<int, std::shared_ptr<const Texture>> images;
     std::vector<std::string> warnings;
 };
 

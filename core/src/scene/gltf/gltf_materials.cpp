@@ -1,7 +1,7 @@
 #include "scene/gltf/gltf_materials.hpp"
 
 #include <cmath>
-#include <optional>
+#include <memory>
 
 #include "rad/util/error.hpp"
 
@@ -9,22 +9,22 @@ namespace rad {
 
 namespace {
 
-// The linear mean of texture `texture`, or empty (with a warning) when it names no image that decoded.
-std::optional<glm::dvec3> texture_mean(GltfFile& file, int texture, const std::string& where) {
-    if (texture < 0) return glm::dvec3(1.0);
+// The image of texture `texture`, or null (with a warning) when it names no image that decoded.
+std::shared_ptr<const Texture> texture_image(GltfFile& file, int texture, const std::string& where) {
+    if (texture < 0) return nullptr;
     const auto& textures = file.model.textures;
     std::string why;
     if (static_cast<std::size_t>(texture) >= textures.size()) {
         why = "texture " + std::to_string(texture) + " does not exist";
     } else {
         const int image = textures[static_cast<std::size_t>(texture)].source;
-        const auto mean = file.image_means.find(image);
-        if (mean != file.image_means.end()) return mean->second;
+        const auto found = file.images.find(image);
+        if (found != file.images.end()) return found->second;
         why = image < 0 ? "texture " + std::to_string(texture) + " has no image stb_image can decode"
                         : "image " + std::to_string(image) + " could not be decoded";
     }
     file.warnings.push_back(gltf_message(file, where + ": " + why + "; the factor alone is used"));
-    return std::nullopt;
+    return nullptr;
 }
 
 glm::dvec3 rgb(const std::vector<double>& values, glm::dvec3 otherwise) {
@@ -47,11 +47,14 @@ Material convert(GltfFile& file, std::size_t index, ReflectanceClamps& clamps) {
     material.two_sided = m.doubleSided;
     const auto& pbr = m.pbrMetallicRoughness;
     material.reflectance = rgb(pbr.baseColorFactor, glm::dvec3(1.0));
-    if (const auto mean = texture_mean(file, pbr.baseColorTexture.index, where + " base colour texture"))
-        material.reflectance *= *mean;
+    material.texture = texture_image(file, pbr.baseColorTexture.index, where + " base colour texture");
+    if (material.texture) material.reflectance *= material.texture->mean;
+    // The emission is uniform over the surface: the emissive texture's mean.
     material.emission = rgb(m.emissiveFactor, glm::dvec3(0.0)) * emissive_strength(m);
-    if (const auto mean = texture_mean(file, m.emissiveTexture.index, where + " emissive texture"))
-        material.emission *= *mean;
+    if (m.emissiveTexture.index >= 0) {
+        if (const auto image = texture_image(file, m.emissiveTexture.index, where + " emissive texture"))
+            material.emission *= image->mean;
+    }
     clamps.clamp(material);
     validate_material(material, gltf_message(file, where));
     return material;

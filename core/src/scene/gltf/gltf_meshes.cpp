@@ -64,6 +64,7 @@ class MeshReader {
     std::size_t skipped() const { return skipped_; }
     std::size_t ragged() const { return ragged_; }
     std::size_t without_material() const { return without_material_; }
+    std::size_t without_texcoords() const { return without_texcoords_; }
 
   private:
     void add_primitive(const PlacedNode& placed, int mesh, std::size_t p) {
@@ -95,14 +96,37 @@ class MeshReader {
         // A transform that mirrors reverses the winding, which glTF's front faces follow.
         const bool mirrored = glm::determinant(glm::dmat3(placed.world)) < 0.0;
         const std::uint32_t group = group_of(mesh, primitive.material, where);
+        const bool textured = add_texcoords(primitive, local.size(), where);
+        const auto uv_base =
+            static_cast<std::uint32_t>(soup_.texcoords.size() - (textured ? local.size() : 0));
         for (std::vector<std::uint32_t>& vertices : merge_triangle_pairs(corners, local)) {
             if (mirrored) std::reverse(vertices.begin(), vertices.end());
             PolygonSoup::Polygon polygon;
             polygon.group = group;
-            for (std::uint32_t& v : vertices) v += base;
+            for (std::uint32_t& v : vertices) {
+                if (textured) polygon.texcoords.push_back(v + uv_base);
+                v += base;
+            }
             polygon.vertices = std::move(vertices);
             soup_.polygons.push_back(std::move(polygon));
         }
+    }
+
+    // Appends the primitive's texture coordinates (one per vertex) when its material has a base colour
+    // texture and the primitive the coordinate set it names; returns whether it did.
+    bool add_texcoords(const tinygltf::Primitive& primitive, std::size_t vertices, const std::string& where) {
+        if (primitive.material < 0 || !materials_[static_cast<std::size_t>(primitive.material)].texture)
+            return false;
+        const int set = file_.model.materials[static_cast<std::size_t>(primitive.material)]
+                            .pbrMetallicRoughness.baseColorTexture.texCoord;
+        const auto uv = primitive.attributes.find("TEXCOORD_" + std::to_string(set));
+        if (uv == primitive.attributes.end()) {
+            ++without_texcoords_;
+            return false;
+        }
+        const std::vector<glm::dvec2> read = read_texcoords(file_, uv->second, vertices, where);
+        soup_.texcoords.insert(soup_.texcoords.end(), read.begin(), read.end());
+        return true;
     }
 
     static std::vector<std::uint32_t> all_vertices(std::size_t count) {
@@ -152,6 +176,7 @@ class MeshReader {
     std::size_t skipped_ = 0;
     std::size_t ragged_ = 0;  // triangle lists whose count of corners is not a multiple of 3
     std::size_t without_material_ = 0;
+    std::size_t without_texcoords_ = 0;  // textured primitives without the coordinates their texture needs
 };
 
 }  // namespace
@@ -169,6 +194,11 @@ void add_meshes(GltfFile& file, const std::vector<PlacedNode>& nodes, const std:
             file, std::to_string(reader.ragged()) +
                       " triangle primitive(s) have a corner count that is not a multiple of 3; the 1 or 2 "
                       "corners left over are ignored"));
+    if (reader.without_texcoords() > 0)
+        file.warnings.push_back(gltf_message(
+            file, std::to_string(reader.without_texcoords()) +
+                      " textured primitive(s) have no texture coordinates; they show their material's mean "
+                      "colour"));
     if (reader.without_material() > 0)
         file.warnings.push_back(
             gltf_message(file, std::to_string(reader.without_material()) +

@@ -7,7 +7,7 @@
 #include "scene/gltf/gltf_file.hpp"
 #include "scene/gltf/gltf_file_access.hpp"
 #include "scene/text_file.hpp"
-#include "scene/texture_mean.hpp"
+#include "scene/texture_image.hpp"
 
 namespace rad {
 
@@ -53,8 +53,9 @@ struct ImageDecoding {
 
 void decode_image(GltfFile& file, int index, const unsigned char* bytes, std::size_t size) {
     std::string why;
-    if (const auto mean = mean_linear_colour(bytes, size, why)) {
-        file.image_means[index] = *mean;
+    const std::string name = "images[" + std::to_string(index) + "]";
+    if (auto texture = decode_texture(bytes, size, name, why)) {
+        file.images[index] = std::move(texture);
     } else {
         file.warnings.push_back(gltf_message(file, "images[" + std::to_string(index) + "]: not used: " + why +
                                                        "; its materials take their factors alone"));
@@ -62,7 +63,7 @@ void decode_image(GltfFile& file, int index, const unsigned char* bytes, std::si
 }
 
 // tinygltf's image callback. An image in a buffer view is left for decode_buffer_view_images: tinygltf passes
-// its bytes without checking the view against its buffer. Images are reduced to their mean colour, so
+// its bytes without checking the view against its buffer. Images are decoded into our own textures, so
 // tinygltf keeps no texels.
 bool load_image(tinygltf::Image* image, int index, std::string*, std::string*, int, int,
                 const unsigned char* bytes, int size, void* user) {

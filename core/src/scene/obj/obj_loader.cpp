@@ -116,12 +116,29 @@ class GroupTable {
     std::map<std::pair<std::size_t, int>, std::uint32_t> index_;
 };
 
+// A face's texture coordinate indices, or none unless every corner has one.
+std::vector<std::uint32_t> texcoord_indices(const tinyobj::mesh_t& mesh, std::size_t offset,
+                                            std::size_t corners, std::size_t uv_count) {
+    std::vector<std::uint32_t> uv;
+    for (std::size_t k = 0; k < corners; ++k) {
+        const int t = mesh.indices[offset + k].texcoord_index;
+        if (t < 0 || static_cast<std::size_t>(t) >= uv_count) return {};
+        uv.push_back(static_cast<std::uint32_t>(t));
+    }
+    return uv;
+}
+
 PolygonSoup to_soup(const std::string& path, const tinyobj::ObjReader& reader, const ObjFacts& facts,
                     const std::vector<Material>& materials, std::vector<std::string>& warnings) {
     PolygonSoup soup;
     soup.source = path;
     const auto& v = reader.GetAttrib().vertices;
     for (std::size_t i = 0; i + 2 < v.size(); i += 3) soup.positions.emplace_back(v[i], v[i + 1], v[i + 2]);
+
+    // OBJ's v runs up from the image's bottom row; ours runs down from its top.
+    const auto& vt = reader.GetAttrib().texcoords;
+    for (std::size_t i = 0; i + 1 < vt.size(); i += 2) soup.texcoords.emplace_back(vt[i], 1.0 - vt[i + 1]);
+    const std::size_t uv_count = soup.texcoords.size();
 
     GroupTable groups(soup, materials);
     std::size_t without_material = 0;
@@ -143,6 +160,8 @@ PolygonSoup to_soup(const std::string& path, const tinyobj::ObjReader& reader, c
             for (std::size_t k = 0; k < corners; ++k) {
                 polygon.vertices.push_back(static_cast<std::uint32_t>(mesh.indices[offset + k].vertex_index));
             }
+            if (soup.groups[polygon.group].material.texture)
+                polygon.texcoords = texcoord_indices(mesh, offset, corners, uv_count);
             offset += corners;
             soup.polygons.push_back(std::move(polygon));
         }

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rad/mesh/patch_albedo.hpp"
+
 namespace rad {
 
 void UniformTransport::gather(std::span<const glm::dvec3> radiosity, std::span<glm::dvec3> irradiance) const {
@@ -59,12 +61,12 @@ UniformTransport make_uniform_transport(const Scene& scene, const PatchMesh& pat
     transport.area.reserve(n);
     transport.reflectance.reserve(n);
     transport.emission.reserve(n);
+    transport.reflectance = patch_albedo(scene, patches);
     for (std::size_t i = 0; i < n; ++i) {
         const Patch& patch = patches.patches[i];
         const Material& material = scene.surfaces.at(patch.surface).material;
         // Only the exposed part of a patch emits, absorbs and reflects into the scene.
         transport.area.push_back(patch.area * form_factors.exposed_fraction(i));
-        transport.reflectance.push_back(material.reflectance);
         transport.emission.push_back(material.emitted_radiosity());
     }
     transport.form_factors = std::move(form_factors);

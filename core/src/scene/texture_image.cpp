@@ -1,0 +1,88 @@
+#include "scene/texture_image.hpp"
+
+#include <stb_image.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+#include "rad/util/srgb.hpp"
+#include "scene/scene_limits.hpp"
+
+namespace rad {
+
+namespace {
+
+using StbPixels = std::unique_ptr<unsigned char, decltype(&stbi_image_free)>;
+
+glm::dvec3 mean_linear(const unsigned char* texels, std::size_t count) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i < count; ++i) {
+        for (int c = 0; c < 3; ++c) sum[c] += srgb_byte_to_linear(texels[3 * i + c]);
+    }
+    return sum / static_cast<double>(count);
+}
+
+// The image reduced by `factor` on each side (its last texels dropped where the side does not divide), each
+// texel the linear mean of its factor × factor block.
+void reduce(const unsigned char* texels, int width, int factor, Texture& texture) {
+    texture.srgb.resize(static_cast<std::size_t>(texture.width) * texture.height * 3);
+    const double weight = 1.0 / (factor * factor);
+    for (int y = 0; y < texture.height; ++y) {
+        for (int x = 0; x < texture.width; ++x) {
+            glm::dvec3 sum(0.0);
+            for (int dy = 0; dy < factor; ++dy) {
+                const unsigned char* row =
+                    texels + (static_cast<std::size_t>(y * factor + dy) * width + x * factor) * 3;
+                for (int dx = 0; dx < 3 * factor; ++dx) sum[dx % 3] += srgb_byte_to_linear(row[dx]);
+            }
+            for (int c = 0; c < 3; ++c) {
+                texture.srgb[(static_cast<std::size_t>(y) * texture.width + x) * 3 + c] =
+                    srgb_byte(static_cast<float>(sum[c] * weight));
+            }
+        }
+    }
+}
+
+}  // namespace
+
+std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, std::size_t size,
+                                              const std::string& name, std::string& why) {
+    if (size == 0 || size > INT_MAX) {
+        why = "the image is empty or too large to decode";
+        return nullptr;
+    }
+    int width = 0, height = 0, channels = 0;
+    // The header first: the texel count decides whether decoding it is worth its memory.
+    if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels)) {
+        why = std::string("stb_image cannot decode it (") + stbi_failure_reason() + ")";
+        return nullptr;
+    }
+    if (width <= 0 || height <= 0 ||
+        static_cast<std::size_t>(width) * static_cast<std::size_t>(height) > kMaxTextureTexels) {
+        why = "it has " + std::to_string(width) + " × " + std::to_string(height) +
+              " texels, more than the limit of " + std::to_string(kMaxTextureTexels);
+        return nullptr;
+    }
+    const StbPixels texels(
+        stbi_load_from_memory(bytes, static_cast<int>(size), &width, &height, &channels, 3),
+        &stbi_image_free);
+    if (!texels) {
+        why = std::string("stb_image cannot decode it (") + stbi_failure_reason() + ")";
+        return nullptr;
+    }
+    auto texture = std::make_shared<Texture>();
+    texture->name = name;
+    texture->mean = mean_linear(texels.get(), static_cast<std::size_t>(width) * height);
+    const int factor = (std::max(width, height) + kMaxDisplayTextureSide - 1) / kMaxDisplayTextureSide;
+    texture->width = std::max(1, width / factor);
+    texture->height = std::max(1, height / factor);
+    if (factor == 1) {
+        texture->srgb.assign(texels.get(), texels.get() + static_cast<std::size_t>(width) * height * 3);
+    } else {
+        reduce(texels.get(), width, factor, *texture);
+    }
+    return texture;
+}
+
+}  // namespace rad
