@@ -323,6 +323,7 @@ struct Checks {
     std::uint64_t vertex_count = 0;
     std::size_t face_corners = 0;  // so far
     std::size_t max_face_corners = 0;
+    bool degenerate_face = false;  // the face just read has fewer than 3 corners or a corner repeated
 };
 
 // Reads values from the body: whitespace-separated words (ASCII) or fixed-size binary fields.
@@ -338,8 +339,12 @@ class BodyReader {
     // Starts element `index` of `name`: in ASCII, one element is one line.
     void begin_element(const std::string& name, std::uint64_t index) {
         where_ = name + " " + std::to_string(index);
-        if (format_ != Format::ascii) return;
+        if (format_ != Format::ascii) {
+            element_start_ = pos_;
+            return;
+        }
         skip_blank_lines();
+        element_start_ = pos_;
         if (pos_ >= bytes_.size()) fail("the file ends before " + where_);
         const std::size_t end = std::min(bytes_.find('\n', pos_), bytes_.size());
         words_ = split_whitespace(std::string_view(bytes_.data() + pos_, end - pos_));
@@ -349,6 +354,10 @@ class BodyReader {
     }
     void end_element() {
         if (format_ == Format::ascii && word_ != words_.size()) fail("more values than the header declares");
+    }
+    // The bytes of the element last begun, once it has been read.
+    std::pair<std::size_t, std::size_t> element_span() const {
+        return {element_start_, std::min(pos_, bytes_.size())};
     }
 
     double value(const std::string& type) {
@@ -429,6 +438,7 @@ class BodyReader {
     std::size_t pos_;
     std::size_t line_;
     std::string where_;
+    std::size_t element_start_ = 0;
     std::vector<std::string_view> words_;
     std::size_t word_ = 0;
 };
@@ -452,11 +462,10 @@ void check_scalar(const BodyReader& body, const Element& e, const Property& p, d
     }
 }
 
-void check_face_indices(BodyReader& body, const Property& p, double count, const Checks& checks) {
-    // OpenMesh cannot add a face of fewer than 3 corners or with a corner repeated (see check_elements).
-    if (count < 3) {
-        body.fail("a face needs at least 3 corners, found " + std::to_string(static_cast<int>(count)));
-    }
+void check_face_indices(BodyReader& body, const Property& p, double count, Checks& checks) {
+    // OpenMesh cannot add a face of fewer than 3 corners or with a corner repeated (see check_elements):
+    // such faces are cut from the bytes it reads.
+    checks.degenerate_face = count < 3;
     std::vector<double> corners;
     for (int i = 0; i < static_cast<int>(count); ++i) {
         const double v = body.value(p.type);
@@ -467,10 +476,28 @@ void check_face_indices(BodyReader& body, const Property& p, double count, const
         corners.push_back(v);
     }
     std::sort(corners.begin(), corners.end());
-    if (const auto repeated = std::adjacent_find(corners.begin(), corners.end()); repeated != corners.end()) {
-        body.fail("vertex index " + std::to_string(static_cast<long long>(*repeated)) +
-                  " appears twice in one face; a face's corners must be distinct");
+    if (std::adjacent_find(corners.begin(), corners.end()) != corners.end()) checks.degenerate_face = true;
+}
+
+// The file's bytes without the faces at `spans` (in order), the header's face count lowered to match.
+std::string without_faces(const std::string& bytes, const Header& header,
+                          const std::vector<std::pair<std::size_t, std::size_t>>& spans) {
+    const auto face = std::find_if(header.elements.begin(), header.elements.end(),
+                                   [](const Element& e) { return e.name == "face"; });
+    // The face element's declaration line (lines count from 1).
+    std::size_t line_start = 0;
+    for (std::size_t line = 1; line < face->line; ++line) line_start = bytes.find('\n', line_start) + 1;
+    const std::size_t line_end = bytes.find('\n', line_start);
+    std::string out = bytes.substr(0, line_start) + "element face " +
+                      std::to_string(face->count - spans.size()) +
+                      bytes.substr(line_end, header.body_offset - line_end);
+    std::size_t from = header.body_offset;
+    for (const auto& [begin, end] : spans) {
+        out.append(bytes, from, begin - from);
+        from = end;
     }
+    out.append(bytes, from, std::string::npos);
+    return out;
 }
 
 void check_property(BodyReader& body, const Element& e, const Property& p, Checks& checks) {
@@ -494,7 +521,7 @@ void check_property(BodyReader& body, const Element& e, const Property& p, Check
 
 }  // namespace
 
-void check_ply(const std::string& path, const std::string& bytes, const SceneFileLimits& limits) {
+PlyCheck check_ply(const std::string& path, const std::string& bytes, const SceneFileLimits& limits) {
     const Header header = HeaderParser(path, bytes).parse();
     check_elements(path, header);
     check_counts(path, header, bytes.size() - header.body_offset, limits);
@@ -504,14 +531,21 @@ void check_ply(const std::string& path, const std::string& bytes, const SceneFil
         if (e.name == "vertex") checks.vertex_count = e.count;
     }
     BodyReader body(path, bytes, header);
+    std::vector<std::pair<std::size_t, std::size_t>> degenerate;
     for (const Element& e : header.elements) {
         for (std::uint64_t i = 0; i < e.count; ++i) {
             body.begin_element(e.name, i);
+            checks.degenerate_face = false;
             for (const Property& p : e.properties) check_property(body, e, p, checks);
             body.end_element();
+            if (checks.degenerate_face) degenerate.push_back(body.element_span());
         }
     }
     body.expect_end();
+    PlyCheck result;
+    result.skipped_faces = degenerate.size();
+    if (!degenerate.empty()) result.repaired = without_faces(bytes, header, degenerate);
+    return result;
 }
 
 }  // namespace rad

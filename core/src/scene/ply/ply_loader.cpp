@@ -4,6 +4,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 #include "rad/scene/polygon_soup.hpp"
 #include "rad/scene/scene_loader.hpp"
@@ -38,14 +39,22 @@ class QuietOpenMesh {
     QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
 };
 
-PlyMesh read_ply_mesh(const std::string& path, bool& has_face_colors, bool& has_vertex_colors) {
+// `repaired`: the bytes to read instead of the file (check_ply's), or empty.
+PlyMesh read_ply_mesh(const std::string& path, const std::string& repaired, bool& has_face_colors,
+                      bool& has_vertex_colors) {
     PlyMesh mesh;
     mesh.request_vertex_colors();
     mesh.request_face_colors();
     OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexColor | OpenMesh::IO::Options::FaceColor;
     const QuietOpenMesh quiet;
-    if (!OpenMesh::IO::read_mesh(mesh, path, options))
-        throw InputError(path + ": OpenMesh could not read this PLY file");
+    bool read = false;
+    if (repaired.empty()) {
+        read = OpenMesh::IO::read_mesh(mesh, path, options);
+    } else {
+        std::istringstream in(repaired, std::ios::binary);
+        read = OpenMesh::IO::read_mesh(mesh, in, ".ply", options);
+    }
+    if (!read) throw InputError(path + ": OpenMesh could not read this PLY file");
     has_face_colors = options.face_has_color();
     has_vertex_colors = options.vertex_has_color();
     return mesh;
@@ -106,12 +115,17 @@ PolygonSoup to_soup(const std::string& path, const PlyMesh& mesh, bool face_colo
 }  // namespace
 
 Scene load_ply(const std::string& path) {
-    check_ply(path, read_text_file(path));
+    const PlyCheck check = check_ply(path, read_text_file(path));
     bool face_colors = false;
     bool vertex_colors = false;
-    const PlyMesh mesh = read_ply_mesh(path, face_colors, vertex_colors);
+    const PlyMesh mesh = read_ply_mesh(path, check.repaired, face_colors, vertex_colors);
     ReflectanceClamps clamps;
     Scene scene = build_scene(to_soup(path, mesh, face_colors, vertex_colors, clamps));
+    if (check.skipped_faces > 0) {
+        scene.warnings.insert(scene.warnings.begin(),
+                              path + ": skipped " + std::to_string(check.skipped_faces) +
+                                  " face(s) of fewer than 3 corners or with a corner repeated");
+    }
     if (const std::string w = clamps.warning(path); !w.empty())
         scene.warnings.insert(scene.warnings.begin(), w);
     if (!face_colors && !vertex_colors) {
