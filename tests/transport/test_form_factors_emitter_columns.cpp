@@ -1,6 +1,7 @@
-// The hemisphere estimator leaves the emitters' columns to the analytic one (form_factors_emitter_columns):
-// those columns are the closed forms where nothing is in the way, agree with a far longer hemisphere
-// estimate where something is, and stay with the hemisphere when there are too many emitter patches.
+// The hemisphere estimator leaves the emitters' columns to shadow rays drawn by power
+// (form_factors_emitter_columns): those columns are the closed forms where nothing is in the way, agree with
+// a far longer hemisphere estimate where something is, share the row's rays when there are many emitter
+// patches, and stay with the hemisphere when the emitters are most of the scene.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -72,26 +73,30 @@ TEST(EmitterColumns, SeeTheLightPastOccludersAsTheHemisphereDoes) {
     EXPECT_EQ(compared, 6u) << "surfaces that see the light";
 }
 
-TEST(EmitterColumns, ShadowRaysPerPairShareTheHemisphereBudget) {
-    EXPECT_EQ(emitter_shadow_rays(0, 2048), 0);
-    EXPECT_EQ(emitter_shadow_rays(8, 2048), kEmitterShadowRays);
-    EXPECT_EQ(emitter_shadow_rays(64, 2048), 32);
-    EXPECT_EQ(emitter_shadow_rays(128, 2048), kMinEmitterShadowRays);
-    EXPECT_EQ(emitter_shadow_rays(129, 2048), 0);
+// 64 emitter patches and 256 rays per row: 16 draws of 16 shadow rays, a systematic sample by power. Each
+// receiver patch's factor to the whole emitter is still the closed form's (within the sample's spread), and
+// no row spends more rays on the emitters than its hemisphere has.
+TEST(EmitterColumns, ManyEmitterPatchesAreDrawnByTheirPower) {
+    const Scene scene = lit_parallel_squares();
+    const PatchMesh fine = test::mesh(scene, 1.0 / 8);
+    FormFactorReport report;
+    const FormFactorMatrix matrix = compute_form_factors(fine, with_emitters(scene, 256), &report);
+    const double exact = test::parallel_rectangles_factor(1, 1, 1);
+    EXPECT_NEAR(test::surface_factor(matrix, fine, 0, 1) / exact, 1.0, 0.01);
+    EXPECT_LE(report.rays, fine.size() * 256u + 64u * 256u);
+    EXPECT_GT(report.rays, fine.size() * 256u);
 }
 
-// With more emitter patches than the budget allows, every column is the hemisphere's: exactly `rays` per
-// patch are traced, and nothing more.
-TEST(EmitterColumns, TooManyEmitterPatchesStayWithTheHemisphere) {
-    const Scene scene = lit_parallel_squares();
-    const PatchMesh fine = test::mesh(scene, 1.0 / 8);  // 64 emitter patches
+// Where the emitters cover most of the scene (a furnace), the hemisphere rays meet them often: every column
+// is the hemisphere's, exactly `rays` per patch.
+TEST(EmitterColumns, LargeEmittersStayWithTheHemisphere) {
+    Scene scene = lit_parallel_squares();
+    scene.surfaces[0].material.emission = glm::dvec3(1.0);
+    const PatchMesh mesh = test::mesh(scene, 1.0 / 4);
     FormFactorReport report;
-    compute_form_factors(fine, with_emitters(scene, 256), &report);  // 256 / 64 < kMinEmitterShadowRays
-    EXPECT_EQ(report.rays, fine.size() * 256u);
-    const PatchMesh coarse = test::mesh(scene, 1.0 / 2);  // 4 emitter patches: 64 shadow rays each
-    compute_form_factors(coarse, with_emitters(scene, 256), &report);
-    EXPECT_EQ(report.rays, coarse.size() * 256u + 4u * 4u * kEmitterShadowRays);  // the 4 receivers' rows
-    // Escaped counts the hemisphere rays that meet nothing; those that meet the light are not escaped.
+    compute_form_factors(mesh, with_emitters(scene, 256), &report);
+    EXPECT_EQ(report.rays, mesh.size() * 256u);
+    // Escaped counts the hemisphere rays that meet nothing.
     EXPECT_NEAR(report.escaped_ray_fraction, 1.0 - test::parallel_rectangles_factor(1, 1, 1), 0.02);
 }
 

@@ -51,15 +51,32 @@ void fill_report(FormFactorReport& report, const FormFactorMatrix& matrix,
 // rays.
 constexpr std::uint64_t kEmitterSeedSalt = 0x5eed'e417'7e55'0001ull;
 
+// Each emitter patch's emitted luminance, from its surface's.
+std::vector<double> emitter_luminance(const PatchMesh& patches, std::span<const std::uint32_t> emitters,
+                                      const FormFactorOptions& options) {
+    std::vector<double> luminance(emitters.size(), 1.0);
+    if (options.emitted_luminance.size() != options.emitting_surfaces.size()) return luminance;
+    for (std::size_t k = 0; k < emitters.size(); ++k) {
+        const std::uint32_t surface = patches.patches[emitters[k]].surface;
+        const auto at =
+            std::find(options.emitting_surfaces.begin(), options.emitting_surfaces.end(), surface);
+        luminance[k] =
+            options.emitted_luminance[static_cast<std::size_t>(at - options.emitting_surfaces.begin())];
+    }
+    return luminance;
+}
+
 RowFunction hemisphere_rows_with_emitters(const PatchMesh& patches, const RayScene& scene, int rays,
                                           const FormFactorOptions& options, std::vector<double>& covered) {
-    const std::vector<std::uint32_t> emitters = emitting_patches(patches, options.emitting_surfaces);
-    const int shadow_rays = emitter_shadow_rays(emitters.size(), rays);
-    if (shadow_rays == 0) return hemisphere_rows(patches, scene, rays, options.seed, covered);
+    std::vector<std::uint32_t> emitters = emitting_patches(patches, options.emitting_surfaces);
+    if (!sample_emitter_columns(patches, emitters))
+        return hemisphere_rows(patches, scene, rays, options.seed, covered);
     RowFunction hemisphere =
         hemisphere_rows(patches, scene, rays, options.seed, covered, column_flags(patches.size(), emitters));
-    return merged_rows(std::move(hemisphere), analytic_rows(patches, scene, shadow_rays,
-                                                            options.seed ^ kEmitterSeedSalt, {}, emitters));
+    std::vector<double> luminance = emitter_luminance(patches, emitters, options);
+    return merged_rows(std::move(hemisphere),
+                       emitter_rows(patches, scene, std::move(emitters), std::move(luminance), rays,
+                                    options.seed ^ kEmitterSeedSalt));
 }
 
 // "2516 patches × 2048 rays, about 11 MB": what the pass will do and the memory it will take, told before

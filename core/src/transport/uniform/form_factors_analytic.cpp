@@ -10,31 +10,11 @@
 
 #include "sampling/sampling.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
+#include "transport/uniform/patch_shapes.hpp"
 
 namespace rad {
 
 namespace {
-
-struct PatchShape {
-    ConvexPolygon polygon;
-    glm::dvec3 centroid{0.0};
-    glm::dvec3 normal{0.0};
-    double area = 0.0;
-};
-
-std::vector<PatchShape> patch_shapes(const PatchMesh& patches) {
-    std::vector<PatchShape> shapes(patches.size());
-    for (std::size_t i = 0; i < patches.size(); ++i) {
-        const glm::uvec4& c = patches.corners[i];
-        PatchShape& s = shapes[i];
-        s.polygon.count = static_cast<std::size_t>(patches.corner_count(i));
-        for (std::size_t k = 0; k < s.polygon.count; ++k) s.polygon.corners[k] = patches.points[c[k]];
-        s.centroid = patches.patches[i].centroid;
-        s.normal = patches.patches[i].normal;
-        s.area = patches.patches[i].area;
-    }
-    return shapes;
-}
 
 struct Sphere {
     glm::dvec3 centre{0.0};
@@ -98,21 +78,6 @@ class SourceDistance {
 double unoccluded_factor(const PatchShape& i, const ConvexPolygon& receiver, const PatchShape& j,
                          const ConvexPolygon& source, const AdaptiveRule& rule) {
     return unoccluded_form_factor(receiver, i.centroid, i.normal, i.area, source, j.normal, rule);
-}
-
-// Appends the pair's shadow rays: from stratified points of `from` (patch lo's part facing hi) to stratified
-// points of `to`, each lifted off its surface along its normal.
-void append_shadow_rays(const ConvexPolygon& from, const glm::dvec3& from_normal, const ConvexPolygon& to,
-                        const glm::dvec3& to_normal, RandomStream& random, double offset,
-                        std::vector<glm::dvec2>& strata, std::vector<Ray>& rays) {
-    const std::size_t count = strata.size() / 2;
-    stratified_square(random, std::span(strata).first(count));
-    stratified_square(random, std::span(strata).last(count));
-    for (std::size_t k = 0; k < count; ++k) {
-        const glm::dvec3 a = point_on_convex_polygon(from.span(), strata[k]) + offset * from_normal;
-        const glm::dvec3 b = point_on_convex_polygon(to.span(), strata[count + k]) + offset * to_normal;
-        rays.push_back(Ray{a, 0.0f, b - a, 1.0f});
-    }
 }
 
 struct Candidate {

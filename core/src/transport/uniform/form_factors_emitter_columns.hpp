@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rad/mesh/patch_mesh.hpp"
+#include "rad/ray/ray_scene.hpp"
 #include "transport/uniform/form_factors_rows.hpp"
 
 namespace rad {
@@ -13,25 +14,41 @@ namespace rad {
 // emitter estimate its direct light, and that noise, times the emitters' radiosity, is most of what is wrong
 // in a picture: each patch gets its own error, which shows as blotches (the Cornell box floor's factor to
 // the light is 0.6 %, so of 4096 rays a floor patch sends about 25 meet the light: 20 % noise). So the
-// hemisphere estimator leaves the emitters' columns to the analytic one: point-to-polygon factors times the
-// visible share of kEmitterShadowRays shadow rays, whose error is only where the light is partly hidden, and
-// there it is a stratified estimate. The shadow rays of one row cost at most as many rays as its hemisphere
-// rays: kEmitterShadowRays per emitter patch, fewer when there are many, down to kMinEmitterShadowRays; below
-// that the emitters are left to the hemisphere rays (large emitters are hit by many of them, so little is
-// lost).
+// hemisphere estimator leaves the emitters' columns to shadow rays aimed at the emitters:
+//
+// each row has T = min(hemisphere rays, kEmitterShadowRays per emitter patch) shadow rays for the emitters,
+// in K = T / kRaysPerDraw draws of kRaysPerDraw rays. An emitter's weight w_j is its emitted luminance times
+// a cheap, conservative estimate of the factor (from the centroids' distance, cosines and the patches'
+// extent). When no more emitters can send light than there are draws, each is drawn about K p_j times (at
+// least once), p_j = w_j / Σ w, and its entry is U_ij times the share of its stratified shadow rays that
+// nothing blocks, U_ij the exact unoccluded factor (point-to-polygon, integrated): as before for a few
+// emitters. When there are more, the K draws are a systematic sample of the weights, and an emitter drawn
+// with probability K p_j < 1 has its entry divided by that probability. Every entry is an unbiased estimate,
+// and the direct light Σ_j F_ij E_j, whose terms the weights follow, has little variance however many emitter
+// patches there are.
 inline constexpr int kEmitterShadowRays = 64;
-inline constexpr int kMinEmitterShadowRays = 16;
+inline constexpr int kRaysPerDraw = 16;
 
-// Shadow rays per (patch, emitter patch) pair, or 0 when the emitters' columns stay with the hemisphere.
-int emitter_shadow_rays(std::size_t emitter_patches, int hemisphere_rays);
+// Where the emitters are large (more than this share of the scene's area, as in a furnace) or so many that
+// the weights would cost more than the rays, the hemisphere rays meet them often enough: their columns stay
+// with the hemisphere estimator.
+inline constexpr double kMaxEmitterAreaShare = 0.5;
+inline constexpr std::size_t kMaxSampledEmitterPatches = 20'000;
 
-// The patches of the emitting surfaces, sorted: the columns to estimate analytically when
-// emitter_shadow_rays allows.
+// The patches of the emitting surfaces, sorted.
 std::vector<std::uint32_t> emitting_patches(const PatchMesh& patches,
                                             std::span<const std::uint32_t> emitting_surfaces);
 
+// Whether the emitters' columns are drawn by power (above) rather than left to the hemisphere rays.
+bool sample_emitter_columns(const PatchMesh& patches, std::span<const std::uint32_t> emitters);
+
 // One flag per patch: 1 for the listed columns.
 std::vector<std::uint8_t> column_flags(std::size_t patch_count, std::span<const std::uint32_t> columns);
+
+// The emitters' columns of every row, as above. `luminance` is each emitter patch's emitted luminance (its
+// sampling weight's first factor), in the order of `emitters`; `hemisphere_rays` the rows' ray count.
+RowFunction emitter_rows(const PatchMesh& patches, const RayScene& scene, std::vector<std::uint32_t> emitters,
+                         std::vector<double> luminance, int hemisphere_rays, std::uint64_t seed);
 
 // Row i of `first` and of `second`, which fill distinct columns, merged in column order.
 RowFunction merged_rows(RowFunction first, RowFunction second);

@@ -31,9 +31,11 @@ struct FormFactorOptions {
     std::size_t max_memory_bytes =
         0;  // budget for the pass; 0 means half the machine's (or container's) memory
     // Surfaces that emit (indices into the scene's surfaces; emitting_surfaces(scene) lists them). The
-    // hemisphere estimator leaves their patches' columns to the analytic one, which is far less noisy for
-    // small bright sources, when there are few enough of them (see form_factors_emitter_columns.hpp).
+    // hemisphere estimator leaves their patches' columns to shadow rays aimed at them, drawn by power, which
+    // is far less noisy for small bright sources (see form_factors_emitter_columns.hpp), unless they are
+    // large; and each one's emitted luminance (the same order; empty: all alike), their weights.
     std::vector<std::uint32_t> emitting_surfaces;
+    std::vector<double> emitted_luminance;
     bool enforce_reciprocity = false;  // replace A_i F_ij and A_j F_ji by their mean
     bool normalize_rows = false;       // scale rows to sum to exactly 1 (closed scenes only)
     // Only for finding a coarser patch size when the pass would not fit the memory budget: the size the

@@ -1,0 +1,37 @@
+#include "transport/uniform/patch_shapes.hpp"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+namespace rad {
+
+std::vector<PatchShape> patch_shapes(const PatchMesh& patches) {
+    std::vector<PatchShape> shapes(patches.size());
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+        const glm::uvec4& c = patches.corners[i];
+        PatchShape& s = shapes[i];
+        s.polygon.count = static_cast<std::size_t>(patches.corner_count(i));
+        for (std::size_t k = 0; k < s.polygon.count; ++k) s.polygon.corners[k] = patches.points[c[k]];
+        s.centroid = patches.patches[i].centroid;
+        s.normal = patches.patches[i].normal;
+        s.area = patches.patches[i].area;
+        for (std::size_t k = 0; k < s.polygon.count; ++k)
+            s.radius = std::max(s.radius, glm::length(s.polygon.corners[k] - s.centroid));
+    }
+    return shapes;
+}
+
+void append_shadow_rays(const ConvexPolygon& from, const glm::dvec3& from_normal, const ConvexPolygon& to,
+                        const glm::dvec3& to_normal, RandomStream& random, double offset,
+                        std::vector<glm::dvec2>& strata, std::vector<Ray>& rays) {
+    const std::size_t count = strata.size() / 2;
+    stratified_square(random, std::span(strata).first(count));
+    stratified_square(random, std::span(strata).last(count));
+    for (std::size_t k = 0; k < count; ++k) {
+        const glm::dvec3 a = point_on_convex_polygon(from.span(), strata[k]) + offset * from_normal;
+        const glm::dvec3 b = point_on_convex_polygon(to.span(), strata[count + k]) + offset * to_normal;
+        rays.push_back(Ray{a, 0.0f, b - a, 1.0f});
+    }
+}
+
+}  // namespace rad

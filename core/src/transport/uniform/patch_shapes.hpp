@@ -1,0 +1,31 @@
+#pragma once
+
+// Patches as polygons for the analytic estimators (every pair's, and the emitters' columns). Private to the
+// library.
+
+#include <vector>
+
+#include "geometry/quadrature.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/ray/ray_scene.hpp"
+#include "sampling/sampling.hpp"
+
+namespace rad {
+
+struct PatchShape {
+    ConvexPolygon polygon;
+    glm::dvec3 centroid{0.0};
+    glm::dvec3 normal{0.0};
+    double area = 0.0;
+    double radius = 0.0;  // of the ball around the centroid that holds the patch
+};
+
+std::vector<PatchShape> patch_shapes(const PatchMesh& patches);
+
+// Appends strata.size() / 2 shadow rays from stratified points of `from` to stratified points of `to`,
+// each lifted `offset` off its surface along its normal; `strata` is scratch of twice the rays' count.
+void append_shadow_rays(const ConvexPolygon& from, const glm::dvec3& from_normal, const ConvexPolygon& to,
+                        const glm::dvec3& to_normal, RandomStream& random, double offset,
+                        std::vector<glm::dvec2>& strata, std::vector<Ray>& rays);
+
+}  // namespace rad
