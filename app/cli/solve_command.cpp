@@ -75,8 +75,9 @@ void print_summary(std::ostream& out, const RadiosityPipeline& pipeline, const S
         std::snprintf(line, sizeof line, ", from the sky and sun %.6g", total(stats.energy.outside));
         out << line;
     }
-    std::snprintf(line, sizeof line, ", absorbed %.6g, escaped %.6g\n", total(stats.energy.absorbed),
-                  total(stats.energy.escaped));
+    std::snprintf(line, sizeof line,
+                  ", absorbed %.6g (%.6g of it by the backs of one-sided surfaces), escaped %.6g\n",
+                  total(stats.energy.absorbed), total(stats.energy.behind), total(stats.energy.escaped));
     out << line;
 }
 

@@ -86,6 +86,25 @@ TEST(OpenScene, TheDefaultEstimatorReportsTheEscapeToo) {
     EXPECT_NEAR(emitted, energy.at("absorbed").at(0).get<double>() + escaped, 5e-3 * emitted);
 }
 
+// Closed rooms whose light meets the backs of one-sided surfaces (400 lamps' backs under a ceiling, a panel
+// built of two back-to-back faces): no ray leaves, so nothing escapes; the light the backs take is absorbed,
+// and reported apart.
+TEST(ClosedScene, NothingEscapesAndWhatBacksTakeIsAbsorbed) {
+    for (const char* name : {"many_lights.obj", "back_to_back.obj"}) {
+        const nlohmann::json doc = solve_json({asset(name)});
+        const auto& stats = doc.at("stats");
+        EXPECT_EQ(stats.at("transport").at("escaped_ray_fraction").get<double>(), 0.0) << name;
+        const auto& energy = stats.at("energy");
+        const double emitted = energy.at("emitted").at(1).get<double>();
+        EXPECT_EQ(energy.at("escaped").at(1).get<double>(), 0.0) << name;
+        EXPECT_GT(energy.at("behind").at(1).get<double>(), 0.0) << name;
+        EXPECT_NEAR(energy.at("absorbed").at(1).get<double>(), emitted, 5e-3 * emitted) << name;
+        std::printf("[ figures  ] %s: emitted %.6g, absorbed %.6g (%.3g by backs), escaped 0\n", name,
+                    emitted, energy.at("absorbed").at(1).get<double>(),
+                    energy.at("behind").at(1).get<double>());
+    }
+}
+
 // assets/hard/no_emitter.obj: nothing emits. Every method returns B = 0 at once, with residual 0 (the
 // relative residual falls back to the absolute one instead of dividing by the zero emitted power).
 TEST(NoEmitter, EveryMethodGivesZeroWithoutDividingByZero) {

@@ -86,7 +86,8 @@ json stats_json(const Transport& transport, const SolveStatistics& stats) {
          {{"emitted", triple(stats.energy.emitted)},
           {"outside", triple(stats.energy.outside)},
           {"absorbed", triple(stats.energy.absorbed)},
-          {"escaped", triple(stats.energy.escaped)}}},
+          {"escaped", triple(stats.energy.escaped)},
+          {"behind", triple(stats.energy.behind)}}},
         {"transport", transport_json(stats.transport)},
     };
 }

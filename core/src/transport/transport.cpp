@@ -38,6 +38,12 @@ void validate_elements(const Transport& transport) {
     }
 }
 
+std::vector<double> Transport::escape() const {
+    std::vector<double> share = reach();
+    for (double& s : share) s = 1.0 - s;
+    return share;
+}
+
 EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dvec3> radiosity) {
     if (radiosity.size() != transport.size()) {
         throw std::invalid_argument("energy_balance: the radiosity has the wrong number of patches");
@@ -45,6 +51,7 @@ EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dv
     std::vector<glm::dvec3> arriving(transport.size());
     transport.gather(radiosity, arriving);
     const std::vector<double> reach = transport.reach();
+    const std::vector<double> escape = transport.escape();
     EnergyBalance balance;
     for (std::size_t i = 0; i < transport.size(); ++i) {
         const double a = transport.area[i];
@@ -53,8 +60,10 @@ EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dv
         balance.emitted += a * (transport.emission[i] - rho * outside);
         balance.outside += a * outside;
         balance.absorbed += a * (1.0 - rho) * (arriving[i] + outside);
-        balance.escaped += a * (1.0 - reach[i]) * radiosity[i];
+        balance.escaped += a * escape[i] * radiosity[i];
+        balance.behind += a * (1.0 - reach[i] - escape[i]) * radiosity[i];
     }
+    balance.absorbed += balance.behind;
     return balance;
 }
 

@@ -49,6 +49,10 @@ class Transport {
     // Per element, the share of the light it sends that reaches other elements: Σ_j F_ij, the row sum (at
     // most about 1; 1 in a closed scene). What is left escapes the scene.
     virtual std::vector<double> reach() const = 0;
+    // Per element, the share of the light it sends that meets nothing and leaves the scene; the rest of
+    // 1 − reach meets the backs of one-sided surfaces, which absorb it. By default (a transport that does not
+    // tell the two apart) all of 1 − reach.
+    virtual std::vector<double> escape() const;
     // The form factors as a sparse matrix, or nullptr where the transport is not one (links).
     virtual const FormFactorMatrix* matrix() const { return nullptr; }
     virtual TransportReport report() const = 0;
@@ -75,15 +79,17 @@ class Transport {
 void validate_elements(const Transport& transport);
 
 // Power (radiosity × area) per channel, for every transport alike. `emitted` is the emitters' Σ A_i E_i and
-// `outside` the light the sky and sun bring in, Σ A_i H_out,i. `escaped` is the light leaving elements that
-// reaches no element: Σ A_i B_i (1 − reach_i). `absorbed` is Σ A_i (1 − ρ_i) (H_i + H_out,i) with
-// H = gather(B). At convergence emitted + outside = absorbed + escaped, to within the transport's
-// reciprocity error (the derivation uses A_i F_ij = A_j F_ji); in a closed scene nothing escapes.
+// `outside` the light the sky and sun bring in, Σ A_i H_out,i. Of the light leaving elements that reaches no
+// element, Σ A_i B_i (1 − reach_i), `escaped` left the scene (Σ A_i B_i escape_i) and `behind` met the
+// backs of one-sided surfaces, which absorb it. `absorbed` is Σ A_i (1 − ρ_i) (H_i + H_out,i) with
+// H = gather(B), plus `behind`. At convergence emitted + outside = absorbed + escaped, to within the
+// transport's reciprocity error (the derivation uses A_i F_ij = A_j F_ji); in a closed scene nothing escapes.
 struct EnergyBalance {
     glm::dvec3 emitted{0.0};
     glm::dvec3 outside{0.0};
     glm::dvec3 absorbed{0.0};
     glm::dvec3 escaped{0.0};
+    glm::dvec3 behind{0.0};  // of absorbed
 
     glm::dvec3 imbalance() const { return emitted + outside - absorbed - escaped; }
 };

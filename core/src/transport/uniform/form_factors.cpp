@@ -67,16 +67,28 @@ std::vector<double> emitter_luminance(const PatchMesh& patches, std::span<const 
 }
 
 RowFunction hemisphere_rows_with_emitters(const PatchMesh& patches, const RayScene& scene, int rays,
-                                          const FormFactorOptions& options, std::vector<double>& covered) {
+                                          const FormFactorOptions& options, std::vector<double>& covered,
+                                          std::vector<double>& escaped) {
     std::vector<std::uint32_t> emitters = emitting_patches(patches, options.emitting_surfaces);
     if (!sample_emitter_columns(patches, emitters))
-        return hemisphere_rows(patches, scene, rays, options.seed, covered);
-    RowFunction hemisphere =
-        hemisphere_rows(patches, scene, rays, options.seed, covered, column_flags(patches.size(), emitters));
+        return hemisphere_rows(patches, scene, rays, options.seed, covered, escaped);
+    RowFunction hemisphere = hemisphere_rows(patches, scene, rays, options.seed, covered, escaped,
+                                             column_flags(patches.size(), emitters));
     std::vector<double> luminance = emitter_luminance(patches, emitters, options);
     return merged_rows(std::move(hemisphere),
                        emitter_rows(patches, scene, std::move(emitters), std::move(luminance), rays,
                                     options.seed ^ kEmitterSeedSalt));
+}
+
+// The share of each row's light that leaves the scene, per unit of its exposed area as the row is; at most
+// what the row leaves to other patches, so what is left (met by back faces) is never negative.
+void record_escape(FormFactorMatrix& matrix, std::span<const double> escaped) {
+    matrix.escaped.resize(matrix.rows());
+    for (std::size_t i = 0; i < matrix.rows(); ++i) {
+        const double share = escaped[i] / matrix.exposed_fraction(i);
+        matrix.escaped[i] =
+            static_cast<float>(std::clamp(share, 0.0, std::max(0.0, 1.0 - matrix.row(i).sum())));
+    }
 }
 
 // "2516 patches × 2048 rays, about 11 MB": what the pass will do and the memory it will take, told before
@@ -107,11 +119,13 @@ FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactor
     RowStats stats;
     FormFactorMatrix matrix;
     std::vector<double> covered(patches.size(), 0.0);
+    std::vector<double> escaped(patches.size(), 0.0);
     if (patches.size() > 0) {
         const RayScene scene(patches);
-        const RowFunction row = options.method == FormFactorMethod::hemisphere
-                                    ? hemisphere_rows_with_emitters(patches, scene, rays, options, covered)
-                                    : analytic_rows(patches, scene, rays, options.seed);
+        const RowFunction row =
+            options.method == FormFactorMethod::hemisphere
+                ? hemisphere_rows_with_emitters(patches, scene, rays, options, covered, escaped)
+                : analytic_rows(patches, scene, rays, options.seed);
         matrix = assemble_rows(patches.size(), row, stats, progress);
         // The analytic rows' shadow rays do not tell covered points apart; probe every patch (a small cost
         // beside its pairs).
@@ -122,6 +136,7 @@ FormFactorMatrix compute_form_factors(const PatchMesh& patches, const FormFactor
     const FormFactorDiagnostics estimate = diagnose(matrix, patches);
     if (options.enforce_reciprocity) matrix = enforce_reciprocity(matrix, patches);
     if (!covered.empty()) expose_rows(matrix, covered);
+    if (options.method == FormFactorMethod::hemisphere) record_escape(matrix, escaped);
     if (options.normalize_rows) normalize_rows(matrix);
     if (report) {
         report->estimate = estimate;

@@ -174,6 +174,7 @@ FormFactorMatrix enforce_reciprocity(const FormFactorMatrix& matrix, const Patch
 }
 
 void normalize_rows(FormFactorMatrix& matrix) {
+    matrix.escaped.clear();  // a normalized row reaches everything it sends
     tbb::parallel_for(Range(0, matrix.rows(), 256), [&](const Range& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
             const double sum = matrix.row(i).sum();

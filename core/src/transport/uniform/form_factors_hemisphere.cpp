@@ -82,7 +82,8 @@ void hemisphere_rays(const PatchMesh& patches, std::uint32_t patch, std::uint64_
 }
 
 RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
-                            std::vector<double>& covered, std::vector<std::uint8_t> skipped) {
+                            std::vector<double>& covered, std::vector<double>& escaped,
+                            std::vector<std::uint8_t> skipped) {
     const double offset = ray_offset(patches);
     auto scratch = std::make_shared<tbb::enumerable_thread_specific<HemisphereScratch>>([&patches, rays] {
         HemisphereScratch s;
@@ -93,11 +94,12 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
         return s;
     });
     skipped.resize(patches.size(), 0);
-    return [&patches, &scene, seed, offset, scratch, &covered, skipped = std::move(skipped)](
+    return [&patches, &scene, seed, offset, scratch, &covered, &escaped, skipped = std::move(skipped)](
                std::uint32_t i, std::vector<RowEntry>& entries, RowStats& stats) {
         HemisphereScratch& s = scratch->local();
         hemisphere_rays(patches, i, seed, offset, s.rays, s.weights);
-        double blocked = 0.0;  // each row is computed once, so covered[i] has one writer
+        double blocked = 0.0;  // each row is computed once, so covered[i] and escaped[i] have one writer
+        double missed = 0.0;
         for (std::size_t first = 0; first < s.rays.size(); first += kBatchRays) {
             const std::size_t count = std::min(kBatchRays, s.rays.size() - first);
             scene.intersect(std::span(s.rays).subspan(first, count), s.hits);
@@ -106,6 +108,7 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
                 if (j == RayHit::kMissed) ++stats.escaped_rays;
                 const double weight = s.weights[first + k];
                 if (j == RayHit::kBackFace) blocked += weight;
+                if (j == RayHit::kMissed) missed += weight;
                 if (j >= patches.size() || j == i || !(weight > 0.0)) continue;  // escaped or blocked
                 if (skipped[j]) continue;
                 if (s.accumulated[j] == 0.0) s.touched.push_back(j);
@@ -119,6 +122,7 @@ RowFunction hemisphere_rows(const PatchMesh& patches, const RayScene& scene, int
         // Rays that met back faces came from covered points or passed under a single-sided sheet; probes
         // tell.
         covered[i] = blocked > 0.0 ? covered_share(patches, scene, i, seed, offset) : 0.0;
+        escaped[i] = missed * scale;
         for (std::uint32_t j : s.touched) {
             entries.push_back({j, s.accumulated[j] * scale});
             s.accumulated[j] = 0.0;

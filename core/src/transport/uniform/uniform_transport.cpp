@@ -31,6 +31,11 @@ std::vector<double> UniformTransport::reach() const {
     return sums;
 }
 
+std::vector<double> UniformTransport::escape() const {
+    if (form_factors.escaped.size() != size()) return Transport::escape();
+    return std::vector<double>(form_factors.escaped.begin(), form_factors.escaped.end());
+}
+
 TransportReport UniformTransport::report() const {
     const FormFactorReport& ff = form_factor_report;
     TransportReport r;

@@ -33,6 +33,10 @@ struct FormFactorMatrix {
     // the form factors of its exposed part, so the light a partly covered patch reflects leaves from that
     // part only instead of being lost into the box.
     std::vector<float> exposed;
+    // Per row, the share of the light it sends that meets nothing and leaves the scene (hemisphere rays that
+    // escaped); the rest of what the row does not reach meets the backs of one-sided surfaces, which absorb
+    // it. Empty where it was not measured (analytic rows), or the rows were normalized.
+    std::vector<float> escaped;
 
     std::size_t rows() const { return row_begin.size() - 1; }
     FormFactorRow row(std::size_t i) const {
@@ -47,7 +51,7 @@ struct FormFactorMatrix {
     std::size_t nonzeros() const { return column.size(); }
     std::size_t memory_bytes() const {
         return row_begin.capacity() * sizeof(std::uint64_t) + column.capacity() * sizeof(std::uint32_t) +
-               (value.capacity() + exposed.capacity()) * sizeof(float);
+               (value.capacity() + exposed.capacity() + escaped.capacity()) * sizeof(float);
     }
 };
 

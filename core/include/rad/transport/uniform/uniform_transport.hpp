@@ -18,7 +18,8 @@ namespace rad {
 class UniformTransport final : public Transport {
   public:
     void gather(std::span<const glm::dvec3> radiosity, std::span<glm::dvec3> irradiance) const override;
-    std::vector<double> reach() const override;  // the row sums
+    std::vector<double> reach() const override;   // the row sums
+    std::vector<double> escape() const override;  // the rows' escaped rays, where measured
     const FormFactorMatrix* matrix() const override { return &form_factors; }
     TransportReport report() const override;
 
