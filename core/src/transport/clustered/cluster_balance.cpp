@@ -124,6 +124,7 @@ void measure_reach(ClusterHierarchy& h, const RayScene& rays, double offset, dou
                    std::uint64_t seed) {
     h.reach.assign(h.leaves.size(), 1.0f);
     h.exposed.assign(h.leaves.size(), 1.0f);
+    h.escape.assign(h.leaves.size(), 0.0f);
     tbb::parallel_for(std::size_t(0), h.leaves.size(), [&](std::size_t k) {
         const std::uint32_t e = h.leaves[k];
         const Element& element = h.tree[e];
@@ -140,9 +141,10 @@ void measure_reach(ClusterHierarchy& h, const RayScene& rays, double offset, dou
                     frame.to_world(cosine_direction(directions[i])), 1e30f};
         std::vector<RayHit> hits(kReachRays);
         rays.intersect(batch, hits);
-        std::size_t reached = 0, covered = 0, back = 0;
+        std::size_t reached = 0, covered = 0, back = 0, missed = 0;
         for (const RayHit& hit : hits) {
             if (hit.patch == RayHit::kBackFace) ++back;
+            if (hit.patch == RayHit::kMissed) ++missed;
             if (hit.patch >= RayHit::kBackFace) continue;
             const bool head_on = glm::dot(h.tree[hit.patch].shape.normal, element.shape.normal) < -0.99;
             if (head_on && static_cast<double>(hit.t) < contact) {
@@ -159,6 +161,10 @@ void measure_reach(ClusterHierarchy& h, const RayScene& rays, double offset, dou
                                        : 0.0;
         h.exposed[k] =
             static_cast<float>(std::max(0.0, 1.0 - inside - static_cast<double>(covered) / kReachRays));
+        // Rays that meet nothing leave from exposed points: per unit of the exposed part.
+        if (h.exposed[k] > 0.0f)
+            h.escape[k] =
+                static_cast<float>(std::min(1.0, static_cast<double>(missed) / kReachRays / h.exposed[k]));
     });
 }
 

@@ -130,7 +130,8 @@ std::size_t ClusterHierarchy::memory_bytes() const {
     return clusters.capacity() * sizeof(Cluster) + patch_order.capacity() * sizeof(std::uint32_t) +
            tree.memory_bytes() + (reflectance.capacity() + emission.capacity()) * sizeof(glm::dvec3) +
            links.capacity() * sizeof(ClusterLink) + receiver_runs.capacity() * sizeof(std::uint32_t) +
-           (receive_scale.capacity() + send_scale.capacity() + reach.capacity() + exposed.capacity()) *
+           (receive_scale.capacity() + send_scale.capacity() + reach.capacity() + exposed.capacity() +
+            escape.capacity()) *
                sizeof(float) +
            leaves.capacity() * sizeof(std::uint32_t);
 }
@@ -165,6 +166,16 @@ std::vector<double> ClusteredTransport::reach() const {
     std::vector<double> out(size());
     for (std::size_t k = 0; k < out.size(); ++k) out[k] = gathered[k].x;
     return out;
+}
+
+std::vector<double> ClusteredTransport::escape() const {
+    std::vector<double> share = reach();
+    const ClusterHierarchy& h = *hierarchy_;
+    for (std::size_t k = 0; k < share.size(); ++k) {
+        const double measured = k < h.escape.size() ? h.escape[k] : 1.0;
+        share[k] = std::clamp(measured, 0.0, std::max(0.0, 1.0 - share[k]));
+    }
+    return share;
 }
 
 TransportReport ClusteredTransport::report() const {

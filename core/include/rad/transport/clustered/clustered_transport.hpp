@@ -111,6 +111,7 @@ struct ClusterHierarchy {
     // links conserve energy (balance_leaves). Its radiosity is that of its exposed part.
     std::vector<float> reach;
     std::vector<float> exposed;
+    std::vector<float> escape;  // per leaf: the measured share of its exposed part's rays that meet nothing
     std::vector<float> receive_scale;
     std::vector<float> send_scale;
     std::vector<std::uint32_t> leaves;
@@ -126,6 +127,7 @@ class ClusteredTransport final : public Transport {
 
     void gather(std::span<const glm::dvec3> radiosity, std::span<glm::dvec3> irradiance) const override;
     std::vector<double> reach() const override;
+    std::vector<double> escape() const override;  // the leaves' measured escape, at most 1 − reach
     TransportReport report() const override;
 
     const ClusterHierarchy& hierarchy() const { return *hierarchy_; }
