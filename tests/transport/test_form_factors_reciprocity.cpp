@@ -4,6 +4,7 @@
 #include "form_factor_test_scenes.hpp"
 #include "rad/scene/builtin_scenes.hpp"
 #include "rad/transport/uniform/form_factors.hpp"
+#include "transport/uniform/form_factors_diagnostics.hpp"
 
 namespace rad {
 namespace {
@@ -82,6 +83,22 @@ TEST(Reciprocity, EnforcingItMakesEveryPairReciprocal) {
         after += mesh.patches[i].area * f.exposed_fraction(i) * f.row(i).sum();
     }
     EXPECT_NEAR(after / before, 1.0, 1e-6);
+}
+
+// Rows that sum over 1 (a sampled estimate's extra hits) are counted, and a normalized matrix has none.
+TEST(RowSums, RowsOverOneAreCountedAndNormalizingRemovesThem) {
+    const PatchMesh mesh = test::mesh(test::parallel_rectangles(1.0, 1.0, 1.0), 1.0);
+    ASSERT_EQ(mesh.size(), 2u);
+    FormFactorMatrix f;
+    f.row_begin = {0, 1, 2};
+    f.column = {1, 0};
+    f.value = {1.05f, 0.5f};
+    EXPECT_EQ(diagnose(f, mesh).rows_over_one, 1u);
+    f.value[0] = 1.005f;  // within kRowSumSlack
+    EXPECT_EQ(diagnose(f, mesh).rows_over_one, 0u);
+    f.value[0] = 1.05f;
+    normalize_rows(f);
+    EXPECT_EQ(diagnose(f, mesh).rows_over_one, 0u);
 }
 
 }  // namespace

@@ -45,6 +45,7 @@ void fill_report(FormFactorReport& report, const FormFactorMatrix& matrix,
     report.mean_reciprocity_error = final_d.mean_reciprocity_error;
     report.min_row_sum = final_d.min_row_sum;
     report.max_row_sum = final_d.max_row_sum;
+    report.rows_over_one = final_d.rows_over_one;
 }
 
 // A seed of its own for the emitter columns' shadow rays, so they share no random numbers with the hemisphere

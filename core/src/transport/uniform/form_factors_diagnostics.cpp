@@ -31,6 +31,7 @@ struct Tally {
     double energy = 0.0;
     double min_row_sum = std::numeric_limits<double>::infinity();
     double max_row_sum = -std::numeric_limits<double>::infinity();
+    std::size_t rows_over_one = 0;
 
     static Tally combine(Tally a, const Tally& b) {
         a.max_error = std::max(a.max_error, b.max_error);
@@ -38,6 +39,7 @@ struct Tally {
         a.energy += b.energy;
         a.min_row_sum = std::min(a.min_row_sum, b.min_row_sum);
         a.max_row_sum = std::max(a.max_row_sum, b.max_row_sum);
+        a.rows_over_one += b.rows_over_one;
         return a;
     }
     void add_pair(double forward_energy, double back_energy) {
@@ -58,6 +60,7 @@ Tally tally_upper(const FormFactorMatrix& m, const PatchMesh& patches, const Ran
         const double s = m.row(i).sum();
         t.min_row_sum = std::min(t.min_row_sum, s);
         t.max_row_sum = std::max(t.max_row_sum, s);
+        if (s > 1.0 + kRowSumSlack) ++t.rows_over_one;
         const auto first =
             std::upper_bound(m.column.begin() + static_cast<std::ptrdiff_t>(m.row_begin[i]),
                              m.column.begin() + static_cast<std::ptrdiff_t>(m.row_begin[i + 1]),
@@ -141,6 +144,7 @@ FormFactorDiagnostics diagnose(const FormFactorMatrix& matrix, const PatchMesh& 
     d.mean_reciprocity_error = t.energy > 0.0 ? t.error_energy / t.energy : 0.0;
     d.min_row_sum = matrix.rows() > 0 ? t.min_row_sum : 0.0;
     d.max_row_sum = matrix.rows() > 0 ? t.max_row_sum : 0.0;
+    d.rows_over_one = t.rows_over_one;
     return d;
 }
 

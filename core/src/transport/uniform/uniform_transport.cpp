@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -50,12 +51,22 @@ TransportReport UniformTransport::report() const {
     // The pass measured the row sums; the viewer asks for a report after every step.
     r.details = {{"min_row_sum", ff.min_row_sum},
                  {"max_row_sum", ff.max_row_sum},
+                 {"rows_over_one", static_cast<double>(ff.rows_over_one)},
                  {"escaped_ray_fraction", ff.escaped_ray_fraction},
                  {"covered_area_fraction", ff.covered_area_fraction},
                  {"max_reciprocity_error", ff.max_reciprocity_error},
                  {"mean_reciprocity_error", ff.mean_reciprocity_error}};
     r.details.insert(r.details.end(), details.begin(), details.end());
     r.notes = notes;
+    if (ff.rows_over_one > 0) {
+        char line[200];
+        std::snprintf(
+            line, sizeof line,
+            "%zu row(s) of form factors sum over %.2f (largest %.4f): their estimate counts some light "
+            "twice; normalizing the rows (closed scenes) scales them to 1",
+            ff.rows_over_one, 1.0 + kRowSumSlack, ff.max_row_sum);
+        r.notes += (r.notes.empty() ? "" : "; ") + std::string(line);
+    }
     return r;
 }
 

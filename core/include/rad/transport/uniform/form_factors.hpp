@@ -54,7 +54,12 @@ struct FormFactorDiagnostics {
     double mean_reciprocity_error = 0.0;
     double min_row_sum = 0.0;
     double max_row_sum = 0.0;
+    std::size_t rows_over_one = 0;  // rows that sum to more than 1 + kRowSumSlack
 };
+
+// A row of form factors sums to at most 1 (all of the patch's light goes somewhere); an estimate over it by
+// more than this is reported (TransportReport::notes).
+inline constexpr double kRowSumSlack = 0.01;
 
 struct FormFactorReport {
     double seconds = 0.0;
@@ -69,6 +74,7 @@ struct FormFactorReport {
     double mean_reciprocity_error = 0.0;
     double min_row_sum = 0.0;
     double max_row_sum = 0.0;
+    std::size_t rows_over_one = 0;
     // Of the estimate before enforce_reciprocity and normalize_rows changed it (the same when neither is
     // set): the estimator's own accuracy.
     FormFactorDiagnostics estimate;
