@@ -24,17 +24,19 @@ glm::dvec3 mean_linear(const unsigned char* texels, std::size_t count) {
 }
 
 // The image reduced by `factor` on each side (its last texels dropped where the side does not divide), each
-// texel the linear mean of its factor × factor block.
-void reduce(const unsigned char* texels, int width, int factor, Texture& texture) {
+// texel the linear mean of its factor × factor block; a side shorter than the factor is one block of it all.
+void reduce(const unsigned char* texels, int width, int height, int factor, Texture& texture) {
     texture.srgb.resize(static_cast<std::size_t>(texture.width) * texture.height * 3);
-    const double weight = 1.0 / (factor * factor);
+    const int block_w = std::min(factor, width), block_h = std::min(factor, height);
+    const double weight = 1.0 / (static_cast<double>(block_w) * block_h);
     for (int y = 0; y < texture.height; ++y) {
         for (int x = 0; x < texture.width; ++x) {
             glm::dvec3 sum(0.0);
-            for (int dy = 0; dy < factor; ++dy) {
-                const unsigned char* row =
-                    texels + (static_cast<std::size_t>(y * factor + dy) * width + x * factor) * 3;
-                for (int dx = 0; dx < 3 * factor; ++dx) sum[dx % 3] += srgb_byte_to_linear(row[dx]);
+            for (int dy = 0; dy < block_h; ++dy) {
+                const unsigned char* row = texels + (static_cast<std::size_t>(y * block_h + dy) * width +
+                                                     static_cast<std::size_t>(x) * block_w) *
+                                                        3;
+                for (int dx = 0; dx < 3 * block_w; ++dx) sum[dx % 3] += srgb_byte_to_linear(row[dx]);
             }
             for (int c = 0; c < 3; ++c) {
                 texture.srgb[(static_cast<std::size_t>(y) * texture.width + x) * 3 + c] =
@@ -80,7 +82,7 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, std::s
     if (factor == 1) {
         texture->srgb.assign(texels.get(), texels.get() + static_cast<std::size_t>(width) * height * 3);
     } else {
-        reduce(texels.get(), width, factor, *texture);
+        reduce(texels.get(), width, height, factor, *texture);
     }
     return texture;
 }
