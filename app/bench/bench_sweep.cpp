@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -239,7 +240,9 @@ class SceneSweep {
 
     // The default run's image and the path tracer's, for a person to compare.
     void keep_images() {
-        const std::string name = scene_.substr(scene_.find(':') + 1);
+        // builtin:NAME gives NAME; a file its name without folder or extension.
+        const std::string name = scene_.starts_with("builtin:") ? scene_.substr(scene_.find(':') + 1)
+                                                                : std::filesystem::path(scene_).stem().string();
         results_.images.push_back({name + "-radiosity.pfm", last_image_});
         results_.images.push_back({name + "-path-traced.pfm", reference_image_.image});
     }
