@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <optional>
 
@@ -241,8 +241,9 @@ class SceneSweep {
     // The default run's image and the path tracer's, for a person to compare.
     void keep_images() {
         // builtin:NAME gives NAME; a file its name without folder or extension.
-        const std::string name = scene_.starts_with("builtin:") ? scene_.substr(scene_.find(':') + 1)
-                                                                : std::filesystem::path(scene_).stem().string();
+        const std::string name = scene_.starts_with("builtin:")
+                                     ? scene_.substr(scene_.find(':') + 1)
+                                     : std::filesystem::path(scene_).stem().string();
         results_.images.push_back({name + "-radiosity.pfm", last_image_});
         results_.images.push_back({name + "-path-traced.pfm", reference_image_.image});
     }

@@ -87,12 +87,16 @@ TEST(OpenScene, TheDefaultEstimatorReportsTheEscapeToo) {
 }
 
 // Closed rooms whose light meets the backs of one-sided surfaces (400 lamps' backs under a ceiling, a panel
-// built of two back-to-back faces): no ray leaves, so nothing escapes, with uniform patches or clustering;
+// built of two back-to-back faces): no ray leaves, so nothing escapes, with uniform patches, hierarchical
+// radiosity or clustering;
 // the light the backs take is absorbed, and reported apart.
 TEST(ClosedScene, NothingEscapesAndWhatBacksTakeIsAbsorbed) {
     for (const char* name : {"many_lights.obj", "back_to_back.obj"}) {
-        const nlohmann::json clustered = solve_json({asset(name), "--subdivision", "clustered"});
-        EXPECT_EQ(clustered.at("stats").at("energy").at("escaped").at(1).get<double>(), 0.0) << name;
+        for (const char* subdivision : {"clustered", "hierarchical"}) {
+            const nlohmann::json linked = solve_json({asset(name), "--subdivision", subdivision});
+            EXPECT_EQ(linked.at("stats").at("energy").at("escaped").at(1).get<double>(), 0.0)
+                << name << ", " << subdivision;
+        }
         const nlohmann::json doc = solve_json({asset(name)});
         const auto& stats = doc.at("stats");
         EXPECT_EQ(stats.at("transport").at("escaped_ray_fraction").get<double>(), 0.0) << name;

@@ -119,7 +119,7 @@ double LinkEstimator::exposed_share(std::uint32_t element) const {
     return 1.0 - covered_share(polygon.span(), e.shape.normal, scene_, seed_, element, offset_, kProbes);
 }
 
-double LinkEstimator::reaching_share(std::uint32_t element) const {
+double LinkEstimator::reaching_share(std::uint32_t element, double* escaping) const {
     constexpr auto kRays = static_cast<std::size_t>(kReachingRays);
     thread_local std::vector<glm::dvec2> origins, directions;
     thread_local std::vector<glm::dvec3> points;
@@ -151,6 +151,11 @@ double LinkEstimator::reaching_share(std::uint32_t element) const {
     scene_.intersect(rays, hits);
     const auto reached =
         std::count_if(hits.begin(), hits.end(), [](const RayHit& h) { return h.patch < RayHit::kBackFace; });
+    if (escaping) {
+        const auto missed = std::count_if(hits.begin(), hits.end(),
+                                          [](const RayHit& h) { return h.patch == RayHit::kMissed; });
+        *escaping = static_cast<double>(missed) / static_cast<double>(rays.size());
+    }
     return std::min(1.0, exposed_share) * static_cast<double>(reached) / static_cast<double>(rays.size());
 }
 

@@ -57,7 +57,8 @@ class LinkEstimator {
     // The element's form factor to the whole scene, times its exposed_share: the share of cosine-weighted
     // rays from stratified points of it that reach the front of some surface (in a closed room 1 where
     // exposed).
-    double reaching_share(std::uint32_t element) const;
+    // `escaping` (if given) receives the share of those rays that meet nothing.
+    double reaching_share(std::uint32_t element, double* escaping = nullptr) const;
 
   private:
     // The share of shadow rays between exposed points of the two polygons that arrive; ends on a side

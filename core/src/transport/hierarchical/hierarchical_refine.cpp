@@ -145,10 +145,14 @@ void LinkRefiner::measure_exposed_share() {
 
 const std::vector<float>& LinkRefiner::measure_reaching() {
     reaching_.resize(system_.tree.size(), -1.0f);
+    system_.escaping_share.resize(system_.tree.size(), -1.0f);
     tbb::parallel_for(std::size_t(0), reaching_.size(), [&](std::size_t e) {
         const auto element = static_cast<std::uint32_t>(e);
-        if (reaching_[e] < 0.0f && system_.tree[element].is_leaf())
-            reaching_[e] = static_cast<float>(estimator_.reaching_share(element));
+        if (reaching_[e] < 0.0f && system_.tree[element].is_leaf()) {
+            double escaping = -1.0;
+            reaching_[e] = static_cast<float>(estimator_.reaching_share(element, &escaping));
+            system_.escaping_share[e] = static_cast<float>(escaping);
+        }
     });
     return reaching_;
 }

@@ -96,7 +96,7 @@ std::size_t HierarchicalSystem::memory_bytes() const {
            receiver_runs.capacity() * sizeof(std::uint32_t) +
            (reflectance.capacity() + emission.capacity()) * sizeof(glm::dvec3) +
            leaves.capacity() * sizeof(std::uint32_t) +
-           (exposed_share.capacity() + leaf_scale.capacity()) * sizeof(float);
+           (exposed_share.capacity() + leaf_scale.capacity() + escaping_share.capacity()) * sizeof(float);
 }
 
 std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene, const PatchMesh& base,

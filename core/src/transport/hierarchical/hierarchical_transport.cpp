@@ -212,6 +212,18 @@ std::vector<double> HierarchicalTransport::reach() const {
     return reach;
 }
 
+std::vector<double> HierarchicalTransport::escape() const {
+    const HierarchicalSystem& h = *system_;
+    std::vector<double> share = reach();
+    for (std::size_t k = 0; k < share.size(); ++k) {
+        const std::uint32_t e = h.leaves[k];
+        const double measured =
+            e < h.escaping_share.size() && h.escaping_share[e] >= 0.0f ? h.escaping_share[e] : 1.0;
+        share[k] = std::clamp(measured, 0.0, std::max(0.0, 1.0 - share[k]));
+    }
+    return share;
+}
+
 TransportReport HierarchicalTransport::report() const {
     TransportReport r;
     r.kind = "hierarchical";

@@ -95,6 +95,9 @@ struct HierarchicalSystem {
     // where three surfaces meet); at high albedo that error would be multiplied bounce after bounce.
     // Empty: no scaling.
     std::vector<float> leaf_scale;
+    // Per element: the measured share of the rays from its exposed part that meet nothing (negative: not
+    // measured).
+    std::vector<float> escaping_share;
     std::vector<std::uint32_t> leaves;  // leaf elements; patch k of leaf_patches is leaves[k]
     PatchMesh leaf_patches;
 
@@ -136,6 +139,7 @@ class HierarchicalTransport final : public Transport {
     void gather(std::span<const glm::dvec3> radiosity, std::span<glm::dvec3> irradiance) const override;
     // What reaches other elements when every element shines with radiosity 1, per unit of exposed area.
     std::vector<double> reach() const override;
+    std::vector<double> escape() const override;  // the leaves' measured escape, at most 1 − reach
     TransportReport report() const override;
 
     const HierarchicalSystem& system() const { return *system_; }
