@@ -69,10 +69,7 @@ FormFactorOptions form_factor_options_for(const FormFactorOptions& options, cons
     FormFactorOptions out = options;
     out.patch_size = loaded.patch_size;
     out.emitting_surfaces = emitting_surfaces(loaded.scene);
-    for (std::uint32_t s : out.emitting_surfaces) {
-        const glm::dvec3 le = loaded.scene.surfaces[s].material.emission;
-        out.emitted_luminance.push_back(0.2126 * le.x + 0.7152 * le.y + 0.0722 * le.z);
-    }
+    out.emitted_luminance = emitted_luminance(loaded.scene, out.emitting_surfaces);
     out.count_patches_at = [&scene = loaded.scene](double patch_size) {
         return count_patches(scene, patch_size);
     };

@@ -68,8 +68,7 @@ FormFactorMatrix form_factors(const Room& room, std::uint64_t seed, bool aim_at_
     options.seed = seed;
     if (aim_at_emitters) {
         options.emitting_surfaces = room.lamps;
-        for (std::uint32_t s : room.lamps)
-            options.emitted_luminance.push_back(room.scene.surfaces[s].material.emission.y);
+        options.emitted_luminance = emitted_luminance(room.scene, room.lamps);
     }
     return compute_form_factors(room.patches, options);
 }

@@ -1,32 +1,26 @@
 #include "rad/mesh/patch_albedo.hpp"
 
+#include <array>
+
+#include "sampling/sampling.hpp"
 #include "scene/face_texcoords.hpp"
 
 namespace rad {
 
 namespace {
 
-// The point at (s, t) in [0, 1]² of patch q: bilinear over a quad's corners; on a triangle the square is
-// folded onto it (t scales the edge from corner 0 along s), which spreads the points over its area.
-glm::dvec3 point_in_patch(const PatchMesh& mesh, std::size_t q, double s, double t) {
-    const glm::uvec4& c = mesh.corners[q];
-    const glm::dvec3 &p0 = mesh.points[c[0]], &p1 = mesh.points[c[1]], &p2 = mesh.points[c[2]];
-    if (mesh.is_triangle(q)) {
-        const double a = std::sqrt(s);
-        return p0 + a * ((1.0 - t) * (p1 - p0) + t * (p2 - p0));
-    }
-    const glm::dvec3& p3 = mesh.points[c[3]];
-    return (1 - s) * (1 - t) * p0 + s * (1 - t) * p1 + s * t * p2 + (1 - s) * t * p3;
-}
-
 glm::dvec3 textured_albedo(const Surface& surface, const PatchMesh& mesh, std::size_t q) {
     const Texture& texture = *surface.material.texture;
     const SurfaceMesh::FaceHandle face(static_cast<int>(mesh.patches[q].face));
+    std::array<glm::dvec3, 4> corners;
+    const auto count = static_cast<std::size_t>(mesh.corner_count(q));
+    for (std::size_t k = 0; k < count; ++k) corners[k] = mesh.points[mesh.corners[q][k]];
+    const std::span<const glm::dvec3> polygon(corners.data(), count);
     glm::dvec3 sum(0.0);
     constexpr int n = kPatchAlbedoSamples;
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {
-            const glm::dvec3 p = point_in_patch(mesh, q, (i + 0.5) / n, (j + 0.5) / n);
+            const glm::dvec3 p = point_on_convex_polygon(polygon, glm::dvec2((i + 0.5) / n, (j + 0.5) / n));
             sum += texture.linear_at(texcoord_at(surface.mesh, face, p));
         }
     }

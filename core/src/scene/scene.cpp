@@ -4,6 +4,7 @@
 #include <glm/common.hpp>
 
 #include "rad/geometry/polygon.hpp"
+#include "util/luminance.hpp"
 
 namespace rad {
 
@@ -63,6 +64,13 @@ std::string no_emitter_warning(const std::string& source) {
 
 bool has_outside_light(const Scene& scene) {
     return scene.sky.present() || scene.sun.present();
+}
+
+std::vector<double> emitted_luminance(const Scene& scene, std::span<const std::uint32_t> surfaces) {
+    std::vector<double> out;
+    out.reserve(surfaces.size());
+    for (std::uint32_t s : surfaces) out.push_back(luminance(scene.surfaces.at(s).material.emission));
+    return out;
 }
 
 }  // namespace rad

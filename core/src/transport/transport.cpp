@@ -1,5 +1,6 @@
 #include "rad/transport/transport.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -39,9 +40,7 @@ void validate_elements(const Transport& transport) {
 }
 
 std::vector<double> Transport::escape() const {
-    std::vector<double> share = reach();
-    for (double& s : share) s = 1.0 - s;
-    return share;
+    return std::vector<double>(size(), 1.0);
 }
 
 EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dvec3> radiosity) {
@@ -60,8 +59,9 @@ EnergyBalance energy_balance(const Transport& transport, std::span<const glm::dv
         balance.emitted += a * (transport.emission[i] - rho * outside);
         balance.outside += a * outside;
         balance.absorbed += a * (1.0 - rho) * (arriving[i] + outside);
-        balance.escaped += a * escape[i] * radiosity[i];
-        balance.behind += a * (1.0 - reach[i] - escape[i]) * radiosity[i];
+        const double escaping = std::clamp(escape[i], 0.0, std::max(0.0, 1.0 - reach[i]));
+        balance.escaped += a * escaping * radiosity[i];
+        balance.behind += a * (1.0 - reach[i] - escaping) * radiosity[i];
     }
     balance.absorbed += balance.behind;
     return balance;

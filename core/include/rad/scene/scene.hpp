@@ -3,6 +3,7 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -71,5 +72,7 @@ bool has_outside_light(const Scene& scene);
 std::string no_emitter_warning(const std::string& source);
 // The indices of the surfaces whose material emits.
 std::vector<std::uint32_t> emitting_surfaces(const Scene& scene);
+// The luminance of the emitted radiance Le of each of `surfaces` (Rec. 709), in their order.
+std::vector<double> emitted_luminance(const Scene& scene, std::span<const std::uint32_t> surfaces);
 
 }  // namespace rad

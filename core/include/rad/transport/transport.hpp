@@ -49,9 +49,10 @@ class Transport {
     // Per element, the share of the light it sends that reaches other elements: Σ_j F_ij, the row sum (at
     // most about 1; 1 in a closed scene). What is left escapes the scene.
     virtual std::vector<double> reach() const = 0;
-    // Per element, the share of the light it sends that meets nothing and leaves the scene; the rest of
-    // 1 − reach meets the backs of one-sided surfaces, which absorb it. By default (a transport that does not
-    // tell the two apart) all of 1 − reach.
+    // Per element, the measured share of the light it sends that meets nothing and leaves the scene;
+    // energy_balance takes at most 1 − reach of it, and the rest of 1 − reach meets the backs of one-sided
+    // surfaces, which absorb it. By default (a transport that does not tell the two apart) 1: all of
+    // 1 − reach escapes.
     virtual std::vector<double> escape() const;
     // The form factors as a sparse matrix, or nullptr where the transport is not one (links).
     virtual const FormFactorMatrix* matrix() const { return nullptr; }

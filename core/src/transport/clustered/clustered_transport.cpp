@@ -169,13 +169,9 @@ std::vector<double> ClusteredTransport::reach() const {
 }
 
 std::vector<double> ClusteredTransport::escape() const {
-    std::vector<double> share = reach();
     const ClusterHierarchy& h = *hierarchy_;
-    for (std::size_t k = 0; k < share.size(); ++k) {
-        const double measured = k < h.escape.size() ? h.escape[k] : 1.0;
-        share[k] = std::clamp(measured, 0.0, std::max(0.0, 1.0 - share[k]));
-    }
-    return share;
+    if (h.escape.size() != size()) return Transport::escape();
+    return std::vector<double>(h.escape.begin(), h.escape.end());
 }
 
 TransportReport ClusteredTransport::report() const {

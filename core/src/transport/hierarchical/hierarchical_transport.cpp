@@ -214,12 +214,10 @@ std::vector<double> HierarchicalTransport::reach() const {
 
 std::vector<double> HierarchicalTransport::escape() const {
     const HierarchicalSystem& h = *system_;
-    std::vector<double> share = reach();
+    std::vector<double> share(h.leaves.size(), 1.0);  // not measured: all of 1 − reach
     for (std::size_t k = 0; k < share.size(); ++k) {
         const std::uint32_t e = h.leaves[k];
-        const double measured =
-            e < h.escaping_share.size() && h.escaping_share[e] >= 0.0f ? h.escaping_share[e] : 1.0;
-        share[k] = std::clamp(measured, 0.0, std::max(0.0, 1.0 - share[k]));
+        if (e < h.escaping_share.size() && h.escaping_share[e] >= 0.0f) share[k] = h.escaping_share[e];
     }
     return share;
 }

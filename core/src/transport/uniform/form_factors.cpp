@@ -52,18 +52,19 @@ void fill_report(FormFactorReport& report, const FormFactorMatrix& matrix,
 // rays.
 constexpr std::uint64_t kEmitterSeedSalt = 0x5eed'e417'7e55'0001ull;
 
-// Each emitter patch's emitted luminance, from its surface's.
+// Each emitter patch's emitted luminance, its surface's (1 for all where the options give none).
 std::vector<double> emitter_luminance(const PatchMesh& patches, std::span<const std::uint32_t> emitters,
                                       const FormFactorOptions& options) {
-    std::vector<double> luminance(emitters.size(), 1.0);
-    if (options.emitted_luminance.size() != options.emitting_surfaces.size()) return luminance;
-    for (std::size_t k = 0; k < emitters.size(); ++k) {
-        const std::uint32_t surface = patches.patches[emitters[k]].surface;
-        const auto at =
-            std::find(options.emitting_surfaces.begin(), options.emitting_surfaces.end(), surface);
-        luminance[k] =
-            options.emitted_luminance[static_cast<std::size_t>(at - options.emitting_surfaces.begin())];
+    std::vector<double> by_surface(patches.surface_begin.size(), 1.0);
+    if (options.emitted_luminance.size() == options.emitting_surfaces.size()) {
+        for (std::size_t k = 0; k < options.emitting_surfaces.size(); ++k) {
+            if (options.emitting_surfaces[k] < by_surface.size())
+                by_surface[options.emitting_surfaces[k]] = options.emitted_luminance[k];
+        }
     }
+    std::vector<double> luminance;
+    luminance.reserve(emitters.size());
+    for (std::uint32_t e : emitters) luminance.push_back(by_surface[patches.patches[e].surface]);
     return luminance;
 }
 
@@ -81,15 +82,11 @@ RowFunction hemisphere_rows_with_emitters(const PatchMesh& patches, const RaySce
                                     options.seed ^ kEmitterSeedSalt));
 }
 
-// The share of each row's light that leaves the scene, per unit of its exposed area as the row is; at most
-// what the row leaves to other patches, so what is left (met by back faces) is never negative.
+// The share of each row's light that leaves the scene, per unit of its exposed area as the row is.
 void record_escape(FormFactorMatrix& matrix, std::span<const double> escaped) {
     matrix.escaped.resize(matrix.rows());
-    for (std::size_t i = 0; i < matrix.rows(); ++i) {
-        const double share = escaped[i] / matrix.exposed_fraction(i);
-        matrix.escaped[i] =
-            static_cast<float>(std::clamp(share, 0.0, std::max(0.0, 1.0 - matrix.row(i).sum())));
-    }
+    for (std::size_t i = 0; i < matrix.rows(); ++i)
+        matrix.escaped[i] = static_cast<float>(escaped[i] / matrix.exposed_fraction(i));
 }
 
 // "2516 patches × 2048 rays, about 11 MB": what the pass will do and the memory it will take, told before

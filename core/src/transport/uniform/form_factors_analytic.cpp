@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <memory>
-#include <numeric>
 #include <vector>
 
 #include "sampling/sampling.hpp"
@@ -107,20 +107,12 @@ double unoccluded_form_factor(const ConvexPolygon& receiver_part, const glm::dve
 }
 
 RowFunction analytic_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
-                          const AdaptiveRule& rule, std::span<const std::uint32_t> columns) {
+                          const AdaptiveRule& rule) {
     auto shapes = std::make_shared<const std::vector<PatchShape>>(patch_shapes(patches));
-    std::vector<std::uint32_t> all_columns;
-    if (columns.empty()) {
-        all_columns.resize(patches.size());
-        std::iota(all_columns.begin(), all_columns.end(), 0u);
-    }
-    auto sources = std::make_shared<const std::vector<std::uint32_t>>(
-        columns.empty() ? std::move(all_columns)
-                        : std::vector<std::uint32_t>(columns.begin(), columns.end()));
     auto scratch = std::make_shared<tbb::enumerable_thread_specific<AnalyticScratch>>();
     const double offset = ray_offset(patches);
     const auto per_pair = static_cast<std::size_t>(rays);
-    return [&scene, shapes, sources, scratch, per_pair, seed, offset, rule](
+    return [&scene, shapes, scratch, per_pair, seed, offset, rule](
                std::uint32_t i, std::vector<RowEntry>& entries, RowStats& stats) {
         const std::vector<PatchShape>& shape = *shapes;
         AnalyticScratch& s = scratch->local();
@@ -128,7 +120,7 @@ RowFunction analytic_rows(const PatchMesh& patches, const RayScene& scene, int r
         s.rays.clear();
         s.strata.resize(2 * per_pair);
         const PatchShape& pi = shape[i];
-        for (std::uint32_t j : *sources) {
+        for (std::uint32_t j = 0; j < shape.size(); ++j) {
             if (j == i) continue;
             const PatchShape& pj = shape[j];
             const ConvexPolygon source = clip_to_front(pj.polygon, pi.centroid, pi.normal);

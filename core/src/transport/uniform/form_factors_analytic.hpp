@@ -23,8 +23,7 @@ double unoccluded_form_factor(const ConvexPolygon& receiver_part, const glm::dve
                               const ConvexPolygon& source, const glm::dvec3& source_normal,
                               const AdaptiveRule& rule = {});
 
-// With `columns` (sorted), only the entries of those columns are computed; empty means all columns.
 RowFunction analytic_rows(const PatchMesh& patches, const RayScene& scene, int rays, std::uint64_t seed,
-                          const AdaptiveRule& rule = {}, std::span<const std::uint32_t> columns = {});
+                          const AdaptiveRule& rule = {});
 
 }  // namespace rad

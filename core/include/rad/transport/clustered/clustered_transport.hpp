@@ -127,7 +127,7 @@ class ClusteredTransport final : public Transport {
 
     void gather(std::span<const glm::dvec3> radiosity, std::span<glm::dvec3> irradiance) const override;
     std::vector<double> reach() const override;
-    std::vector<double> escape() const override;  // the leaves' measured escape, at most 1 − reach
+    std::vector<double> escape() const override;  // the leaves' measured escape
     TransportReport report() const override;
 
     const ClusterHierarchy& hierarchy() const { return *hierarchy_; }

@@ -139,7 +139,7 @@ class HierarchicalTransport final : public Transport {
     void gather(std::span<const glm::dvec3> radiosity, std::span<glm::dvec3> irradiance) const override;
     // What reaches other elements when every element shines with radiosity 1, per unit of exposed area.
     std::vector<double> reach() const override;
-    std::vector<double> escape() const override;  // the leaves' measured escape, at most 1 − reach
+    std::vector<double> escape() const override;  // the leaves' measured escape
     TransportReport report() const override;
 
     const HierarchicalSystem& system() const { return *system_; }
