@@ -4,7 +4,9 @@
 #include <string>
 
 #include "pipeline/form_factor_options.hpp"
+#include "rad/display/vertex_direct_light.hpp"
 #include "rad/mesh/patch_albedo.hpp"
+#include "rad/ray/ray_scene.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
 
@@ -140,6 +142,7 @@ SavedSolution RadiosityPipeline::saved_solution() const {
     saved.emission = t.emission;
     saved.solution.assign(solver_->solution().begin(), solver_->solution().end());
     saved.display_solution = solver_->display_solution();
+    saved.direct = element_direct();
     const StepReport& report = solver_->report();
     saved.report.steps = report.step;
     saved.report.residual = report.residual;
@@ -235,8 +238,55 @@ void RadiosityPipeline::restart_solver(SolverMethod method, const SolverOptions&
 }
 
 const DisplayMesh& RadiosityPipeline::display() const {
-    if (!display_) display_.emplace(build_display_mesh(patches(), options_.display, display_texturing()));
+    if (!display_) display_.emplace(build_display(options_.display));
     return *display_;
+}
+
+namespace {
+
+std::vector<glm::dvec3> emitted_radiosity(const Scene& scene, const PatchMesh& patches) {
+    std::vector<glm::dvec3> emitted(patches.size());
+    for (std::size_t q = 0; q < patches.size(); ++q)
+        emitted[q] = scene.surfaces[patches.patches[q].surface].material.emitted_radiosity();
+    return emitted;
+}
+
+}  // namespace
+
+std::vector<glm::dvec3> RadiosityPipeline::element_direct() const {
+    const Transport& t = *built_.transport;
+    const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, patches());
+    std::vector<glm::dvec3> direct(t.size());
+    t.gather(emitted, direct);
+    for (std::size_t q = 0; q < direct.size(); ++q) direct[q] *= t.reflectance[q];
+    return direct;
+}
+
+DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options) const {
+    DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
+    if (options.mode != ColourMode::smooth || !options.direct_light_at_vertices) return display;
+    if (!built_.transport && !saved_) return display;
+    const PatchMesh& mesh = patches();
+    const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, mesh);
+    const RayScene rays(mesh);
+    VertexDirectLightInput input{
+        .patches = &mesh, .rays = &rays, .emitted = emitted, .seed = options_.form_factors.seed};
+    std::vector<glm::dvec3> direct;
+    if (built_.transport) {
+        const Transport& t = *built_.transport;
+        direct = element_direct();
+        input.emission = t.emission;
+        input.reflectance = t.reflectance;
+        input.area = t.area;
+        input.patch_direct = direct;
+    } else {
+        input.emission = saved_->emission;
+        input.reflectance = saved_->reflectance;
+        input.area = saved_->area;
+        input.patch_direct = saved_->direct;
+    }
+    add_vertex_direct_light(display, input);
+    return display;
 }
 
 DisplayTexturing RadiosityPipeline::display_texturing() const {

@@ -85,6 +85,9 @@ class RadiosityPipeline {
     Subdivision subdivision() const { return subdivision_; }
     // Built on first use, so `solve` never pays for it.
     const DisplayMesh& display() const;
+    // A display mesh of patches() with these options; in smooth mode, once there is a transport or a saved
+    // solution, with the emitters' direct light at its vertices (DisplayOptions::direct_light_at_vertices).
+    DisplayMesh build_display(const DisplayOptions& options) const;
     // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the
     // transport's after prepare, the saved one, or else the patches' mean albedo, which uniform transport
     // will use).
@@ -111,6 +114,8 @@ class RadiosityPipeline {
 
   private:
     TransportSettings transport_settings() const;
+    // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
+    std::vector<glm::dvec3> element_direct() const;
     void continue_saved();
     // --subdivision auto: uniform patches or clustering by the scene's faces, then the uniform mesh's size
     // (choose_subdivision), and the patches that subdivision is meshed with.

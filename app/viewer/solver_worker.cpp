@@ -230,7 +230,7 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     saved_options_ = std::move(saved_options);
     remesh_unavailable_ = saved_options_ ? missing_scene(saved_options_->scene.scene) : std::string();
     ++opened_;
-    display_ = build_display_mesh(pipeline_->patches(), options_.display, pipeline_->display_texturing());
+    display_ = pipeline_->build_display(options_.display);
     start_bounce_history();
     set_can_step(false);
     publish(true, saved);
@@ -245,8 +245,11 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     // A saved solution's rebuilt elements were checked to be the saved ones, which are drawn already.
     if (!saved && &pipeline_->patches() != &pipeline_->loaded().patches) {
         // The transport's elements are new patches (adaptive or hierarchical leaves): new geometry to draw.
-        display_ = build_display_mesh(pipeline_->patches(), options_.display, pipeline_->display_texturing());
+        display_ = pipeline_->build_display(options_.display);
         publish(true, false);
+    } else if (!saved) {
+        // The same geometry, now with the emitters' direct light at its vertices.
+        display_ = pipeline_->build_display(options_.display);
     }
     if (!saved) {
         reset_solver(Reset{options_.solver.method, options_.solver.tolerance, false});
@@ -255,7 +258,8 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     // The pipeline's solver continues from the saved radiosity; a reset would start it from the emission.
     step_offset_ = saved_steps;
     start_bounce_history();
-    add_bounce(pipeline_->solver().display_solution());
+    add_bounce(pipeline_->solver().display_solution(),
+               direct_light_share(display_, pipeline_->solver().display_solution()));
     history_residual_.clear();
     history_unshot_.clear();
     set_can_step(!pipeline_->solver().report().finished());
@@ -273,7 +277,9 @@ void SolverWorker::reset_solver(const Reset& reset) {
     pipeline_->restart_solver(solver_method(options_.solver), solver_options);
     step_offset_ = 0;
     start_bounce_history();
-    add_bounce(pipeline_->solver().display_solution());  // step 0: the emission is the newest light
+    // Step 0: the emission (or the first guess) is the newest light.
+    add_bounce(pipeline_->solver().display_solution(),
+               direct_light_share(display_, pipeline_->solver().display_solution()));
     history_residual_.clear();
     history_unshot_.clear();
     set_can_step(!pipeline_->solver().report().finished());
@@ -286,7 +292,9 @@ void SolverWorker::take_step() {
     if (!pipeline_ || !solver_ready_) return;
     const std::vector<glm::dvec3> before = pipeline_->solver().display_solution();
     const StepReport report = pipeline_->step();
-    add_bounce(positive_difference(pipeline_->solver().display_solution(), before));
+    const std::vector<glm::dvec3> after = pipeline_->solver().display_solution();
+    add_bounce(positive_difference(after, before),
+               direct_light_share(display_, after) - direct_light_share(display_, before));
     history_residual_.push_back(log10_or_floor(report.residual));
     history_unshot_.push_back(
         log10_or_floor(report.unshot_power.x + report.unshot_power.y + report.unshot_power.z));
@@ -302,10 +310,10 @@ void SolverWorker::take_step() {
 void SolverWorker::switch_colour_mode(ColourMode mode) {
     if (!pipeline_ || options_.display.mode == mode) return;
     options_.display.mode = mode;
-    display_ = build_display_mesh(pipeline_->patches(), options_.display, pipeline_->display_texturing());
+    display_ = pipeline_->build_display(options_.display);
     for (std::size_t i = 0; i < bounce_history_.size(); ++i) {
-        vertex_bounces_[i] =
-            std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce_history_[i]));
+        vertex_bounces_[i] = std::make_shared<const std::vector<glm::vec3>>(
+            vertex_radiance(display_, bounce_history_[i], bounce_direct_share_[i]));
     }
     publish(true, solver_ready_ || pipeline_->saved());
 }
@@ -313,16 +321,19 @@ void SolverWorker::switch_colour_mode(ColourMode mode) {
 void SolverWorker::start_bounce_history() {
     bounce_history_.clear();
     vertex_bounces_.clear();
+    bounce_direct_share_.clear();
     first_bounce_ = 0;
 }
 
-void SolverWorker::add_bounce(std::vector<glm::dvec3> bounce) {
+void SolverWorker::add_bounce(std::vector<glm::dvec3> bounce, double direct_share) {
     vertex_bounces_.push_back(
-        std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce)));
+        std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce, direct_share)));
     bounce_history_.push_back(std::move(bounce));
+    bounce_direct_share_.push_back(direct_share);
     if (bounce_history_.size() > kKeptBounces) {
         bounce_history_.pop_front();
         vertex_bounces_.pop_front();
+        bounce_direct_share_.pop_front();
         ++first_bounce_;
     }
 }

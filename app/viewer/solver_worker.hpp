@@ -65,7 +65,8 @@ class SolverWorker {
     void switch_colour_mode(ColourMode mode);
     void set_can_step(bool can_step);
     void start_bounce_history();
-    void add_bounce(std::vector<glm::dvec3> bounce);
+    // `direct_share`: how much of the emitters' direct light the step added (direct_light_share's rise).
+    void add_bounce(std::vector<glm::dvec3> bounce, double direct_share);
     // Hands the display mesh (when it changed) and the colours (when the solver has some) to the render
     // thread.
     void publish(bool geometry_changed, bool with_radiance);
@@ -93,6 +94,7 @@ class SolverWorker {
     // Per patch, what each of the last steps added (front: step first_bounce_), and the same per vertex.
     std::deque<std::vector<glm::dvec3>> bounce_history_;
     std::deque<ViewerRadiance::Colours> vertex_bounces_;
+    std::deque<double> bounce_direct_share_;
     std::size_t first_bounce_ = 0;
     std::vector<float> history_residual_;
     std::vector<float> history_unshot_;

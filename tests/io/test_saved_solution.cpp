@@ -55,6 +55,7 @@ SavedSolution example() {
         saved.emission.push_back({x, 2.0 * x, 0.5});
         saved.solution.push_back({x + 0.125, x + 0.25, x + 1.0 / 3.0});
         saved.display_solution.push_back({x + 0.5, x + 0.75, x + 1e-300});
+        saved.direct.push_back({x / 4.0, 0.0, x + 2.0});
     }
     saved.report = {42, 3.5e-6, "iteration limit", "stopped at the step limit of 42"};
     return saved;
@@ -133,6 +134,7 @@ TEST(SavedSolution, RoundTripsEveryField) {
     EXPECT_EQ(b.emission, a.emission);
     EXPECT_EQ(b.solution, a.solution);
     EXPECT_EQ(b.display_solution, a.display_solution);
+    EXPECT_EQ(b.direct, a.direct);
     EXPECT_EQ(b.report.steps, 42u);
     EXPECT_EQ(b.report.residual, 3.5e-6);
     EXPECT_EQ(b.report.status, "iteration limit");
@@ -239,6 +241,9 @@ TEST(SavedSolution, RefusesNonFiniteValuesAndIndicesOutOfRange) {
     SavedSolution bad_reflectance = example();
     bad_reflectance.scene.surfaces[0].material.reflectance.x = 1.0;
     expect_refused(encode_saved_solution(bad_reflectance), "reflectance");
+    SavedSolution bad_direct = example();
+    bad_direct.direct[4].z = -1.0;
+    expect_refused(encode_saved_solution(bad_direct), "element 4: negative direct light");
     SavedSolution bad_solver = example();
     bad_solver.settings.solver = "magic";
     expect_refused(encode_saved_solution(bad_solver), "solver 'magic'");

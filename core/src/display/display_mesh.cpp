@@ -12,6 +12,8 @@
 
 #include "display/patch_gradients.hpp"
 #include "display/patch_texturing.hpp"
+#include "display/seam_vertices.hpp"
+#include "util/luminance.hpp"
 
 namespace rad {
 
@@ -223,17 +225,41 @@ DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& o
             ? build_flat(patches, textures)
             : build_smooth(patches, options.crease_angle_degrees, options.reconstruction, textures);
     display.patch_count = patches.size();
+    close_seams(display);
     textures.finish(display);
     return display;
 }
 
+double direct_light_share(const DisplayMesh& display, std::span<const glm::dvec3> radiosity) {
+    const DisplayMesh::DirectLight& direct = display.direct;
+    if (direct.vertex.empty() || radiosity.size() != direct.patch.size()) return 0.0;
+    double held = 0.0, full = 0.0;
+    for (std::size_t q = 0; q < radiosity.size(); ++q) {
+        held += direct.area[q] * luminance(radiosity[q] - direct.emission[q]);
+        full += direct.area[q] * luminance(direct.patch[q]);
+    }
+    return full > 0.0 ? std::clamp(held / full, 0.0, 1.0) : 0.0;
+}
+
 void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                     std::span<glm::vec3> radiance) {
+                     std::span<glm::vec3> radiance, std::optional<double> direct_share) {
     if (radiance.size() != display.vertex_count()) {
         throw std::invalid_argument("vertex_radiance: the output does not have one entry per vertex");
     }
     if (radiosity.size() != display.patch_count) {
         throw std::invalid_argument("vertex_radiance: the radiosity does not have one entry per patch");
+    }
+    // Where the vertices have direct light of their own, the patches give the rest.
+    const bool has_direct = !display.direct.vertex.empty();
+    const double share =
+        has_direct ? std::clamp(direct_share.value_or(direct_light_share(display, radiosity)), 0.0, 1.0)
+                   : 0.0;
+    std::vector<glm::dvec3> indirect;
+    if (share > 0.0) {
+        indirect.resize(radiosity.size());
+        for (std::size_t q = 0; q < indirect.size(); ++q)
+            indirect[q] = radiosity[q] - share * display.direct.patch[q];
+        radiosity = indirect;
     }
     // A textured patch contributes the irradiance it receives, which the pixel multiplies by its albedo.
     std::vector<glm::dvec3> irradiance;
@@ -263,13 +289,15 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
         // (half a patch or more beyond the last centroid, at a T-vertex) stay exact. Light is never negative.
         const glm::dvec3 margin = kReconstructionMargin * (high - low);
         sum = glm::clamp(sum, glm::max(low - margin, glm::dvec3(0.0)), high + margin);
+        if (share > 0.0) sum = glm::max(sum + share * glm::dvec3(display.direct.vertex[v]), 0.0);
         radiance[v] = glm::vec3(sum / std::numbers::pi);
     }
 }
 
-std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity) {
+std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
+                                       std::optional<double> direct_share) {
     std::vector<glm::vec3> radiance(display.vertex_count());
-    vertex_radiance(display, radiosity, radiance);
+    vertex_radiance(display, radiosity, radiance, direct_share);
     return radiance;
 }
 

@@ -429,7 +429,7 @@ std::uint64_t saved_solution_checksum(std::string_view payload) {
 std::string encode_saved_solution(const SavedSolution& saved) {
     const std::size_t n = saved.size();
     if (saved.area.size() != n || saved.reflectance.size() != n || saved.emission.size() != n ||
-        saved.solution.size() != n || saved.display_solution.size() != n) {
+        saved.solution.size() != n || saved.display_solution.size() != n || saved.direct.size() != n) {
         throw std::invalid_argument("saved solution: per-element arrays differ from the patch count");
     }
     Writer w;
@@ -438,7 +438,8 @@ std::string encode_saved_solution(const SavedSolution& saved) {
     write_scene(w, saved.scene);
     write_patches(w, saved.patches);
     for (double a : saved.area) w.f64(a);
-    for (const auto* values : {&saved.reflectance, &saved.emission, &saved.solution, &saved.display_solution})
+    for (const auto* values :
+         {&saved.reflectance, &saved.emission, &saved.solution, &saved.display_solution, &saved.direct})
         for (const glm::dvec3& v : *values) w.vec(v);
     w.u64(saved.report.steps);
     w.f64(saved.report.residual);
@@ -479,8 +480,8 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
 
     Reader r(payload, name);
     SavedSolution saved;
-    // The smallest element is 76 bytes of patch and 104 of values.
-    const std::size_t n = r.count("element count", 76 + 104);
+    // The smallest element is 76 bytes of patch and 128 of values.
+    const std::size_t n = r.count("element count", 76 + 128);
     saved.settings = read_settings(r);
     saved.scene = read_scene(r);
     saved.scene.source = saved.settings.scene_source;
@@ -499,12 +500,14 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
     values(saved.emission, "element emission");
     values(saved.solution, "solution");
     values(saved.display_solution, "display solution");
+    values(saved.direct, "element direct light");
     for (std::size_t i = 0; i < n; ++i) {
         for (int c = 0; c < 3; ++c) {
             if (saved.reflectance[i][c] < 0.0 || saved.reflectance[i][c] > 1.0) {
                 r.fail("element " + std::to_string(i) + ": reflectance outside [0, 1]");
             }
             if (saved.emission[i][c] < 0.0) r.fail("element " + std::to_string(i) + ": negative emission");
+            if (saved.direct[i][c] < 0.0) r.fail("element " + std::to_string(i) + ": negative direct light");
         }
     }
     saved.report.steps = r.u64("step count");

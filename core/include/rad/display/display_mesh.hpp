@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct DisplayOptions {
     // per circle.
     double crease_angle_degrees = 30.0;
     Reconstruction reconstruction = Reconstruction::linear;
+    // Smooth mode: whoever builds the display over a solved transport adds the emitters' direct light at
+    // each vertex (add_vertex_direct_light, which traces rays; build_display_mesh does not).
+    bool direct_light_at_vertices = true;
 };
 
 // What texel detail needs: the scene the patches were cut from (its textured surfaces) and the reflectance
@@ -87,6 +91,16 @@ struct DisplayMesh {
     std::vector<glm::vec2> texcoords;
     std::vector<TexturedRange> textured;            // in triangle order, not overlapping
     std::vector<PatchIrradiance> patch_irradiance;  // per patch where any is textured, else empty
+    // The emitters' direct light evaluated at each vertex (add_vertex_direct_light), or all empty. A vertex
+    // shows its patches' reconstruction of B − s · patch, plus s · vertex, s being how much of the direct
+    // light the radiosity holds (direct_light_share).
+    struct DirectLight {
+        std::vector<glm::dvec3> patch;     // per patch ρ H_d: the direct light its radiosity holds
+        std::vector<glm::dvec3> emission;  // per patch E, and
+        std::vector<double> area;          // its area, for direct_light_share
+        std::vector<glm::vec3> vertex;     // per vertex ρ H_d at the vertex (H_d on textured surfaces)
+    };
+    DirectLight direct;
 
     std::size_t vertex_count() const { return positions.size(); }
 };
@@ -95,12 +109,19 @@ struct DisplayMesh {
 DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& options = {},
                                const DisplayTexturing& texturing = {});
 
+// How much of the emitters' direct light a radiosity holds, from 0 (the emission alone) to 1 (every
+// solution past its first bounce): Σ A (B − E) / Σ A ρ H_d over the patches, in luminance, at most 1. 0
+// where the mesh has no direct light of its own (DisplayMesh::direct empty).
+double direct_light_share(const DisplayMesh& display, std::span<const glm::dvec3> radiosity);
+
 // Radiance L = B / π per display vertex (H / π on textured surfaces), from the radiosity B per patch (a
-// Solver's display_solution()).
+// Solver's display_solution()). `direct_share` is what direct_light_share measures unless given: a view of
+// one bounce alone gives 1 for the first and 0 for the others.
 // Writes radiance[v] for every vertex; radiance must hold vertex_count() entries.
 void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                     std::span<glm::vec3> radiance);
-std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity);
+                     std::span<glm::vec3> radiance, std::optional<double> direct_share = {});
+std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
+                                       std::optional<double> direct_share = {});
 
 // The radiance each vertex itself shows, from what vertex_radiance gave: a textured vertex's value times the
 // albedo at its texture coordinates, plus the surface's emitted radiance; other vertices as they are. What

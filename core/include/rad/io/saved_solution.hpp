@@ -44,8 +44,8 @@ struct SavedReport {
 };
 
 // A solved scene, as `solve --save` writes it: the scene as loaded (its warnings excepted), the settings,
-// the elements the solution is indexed by (as patches) with their A, ρ, E, the solution and what the display
-// shows, and the solver's report.
+// the elements the solution is indexed by (as patches) with their A, ρ, E, the solution, what the display
+// shows and the direct light it draws at vertices, and the solver's report.
 struct SavedSolution {
     SavedSettings settings;
     Scene scene;  // source is settings.scene_source
@@ -54,6 +54,8 @@ struct SavedSolution {
     std::vector<glm::dvec3> reflectance, emission;  // ρ, E = π Le
     std::vector<glm::dvec3> solution;               // B (Solver::solution)
     std::vector<glm::dvec3> display_solution;       // what is shown (Solver::display_solution)
+    std::vector<glm::dvec3> direct;                 // ρ H_d: the emitters' light reflected once
+                                                    // (DisplayMesh::DirectLight::patch)
     SavedReport report;
 
     std::size_t size() const { return patches.size(); }
@@ -64,7 +66,7 @@ struct SavedSolution {
 //   24 u64 checksum: 64-bit FNV-1a of the payload
 // The payload's layout is in docs/architecture.md ("Saved solutions") and saved_solution.cpp.
 inline constexpr std::string_view kSavedSolutionMagic{"\x89RADSOL\n", 8};
-inline constexpr std::uint32_t kSavedSolutionVersion = 2;
+inline constexpr std::uint32_t kSavedSolutionVersion = 3;
 inline constexpr std::size_t kSavedSolutionHeaderBytes = 32;
 
 // Whether a scene argument names a saved solution rather than a scene: it ends in .radiosity (any case).

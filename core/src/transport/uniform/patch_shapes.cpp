@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <glm/geometric.hpp>
+#include <numbers>
 
 namespace rad {
 
@@ -19,6 +20,19 @@ std::vector<PatchShape> patch_shapes(const PatchMesh& patches) {
             s.radius = std::max(s.radius, glm::length(s.polygon.corners[k] - s.centroid));
     }
     return shapes;
+}
+
+double factor_weight(const glm::dvec3& centre, const glm::dvec3& normal, double radius,
+                     const PatchShape& source) {
+    const glm::dvec3 d = source.centroid - centre;
+    const double distance = glm::length(d);
+    if (!(distance > 0.0)) return 0.0;
+    const glm::dvec3 towards = d / distance;
+    const double gap = std::max(0.0, distance - radius - source.radius);
+    const double lift = gap > 0.0 ? (radius + source.radius) / gap : 1.0;
+    const double ci = std::clamp(glm::dot(normal, towards) + lift, 0.0, 1.0);
+    const double cj = std::clamp(-glm::dot(source.normal, towards) + lift, 0.0, 1.0);
+    return source.area * ci * cj / (std::numbers::pi * gap * gap + source.area);
 }
 
 void append_shadow_rays(const ConvexPolygon& from, const glm::dvec3& from_normal, const ConvexPolygon& to,

@@ -22,6 +22,13 @@ struct PatchShape {
 
 std::vector<PatchShape> patch_shapes(const PatchMesh& patches);
 
+// A weight roughly proportional to the factor from a receiver (a patch, or a point: radius 0) to `source`,
+// and positive wherever the exact one can be: the disk approximation A_j c_i c_j / (π g² + A_j) with each
+// cosine lifted by the two's extent over their gap g, so a neighbour at a grazing angle is never dismissed.
+// How light sources are weighted when they are drawn by power.
+double factor_weight(const glm::dvec3& centre, const glm::dvec3& normal, double radius,
+                     const PatchShape& source);
+
 // Appends strata.size() / 2 shadow rays from stratified points of `from` to stratified points of `to`,
 // each lifted `offset` off its surface along its normal; `strata` is scratch of twice the rays' count.
 void append_shadow_rays(const ConvexPolygon& from, const glm::dvec3& from_normal, const ConvexPolygon& to,

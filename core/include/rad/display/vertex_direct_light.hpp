@@ -1,0 +1,42 @@
+#pragma once
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <span>
+
+#include "rad/display/display_mesh.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/ray/ray_scene.hpp"
+
+namespace rad {
+
+// Shadow rays per display vertex for its direct light, drawn over the emitter patches by power.
+inline constexpr int kVertexShadowRays = 128;
+
+struct VertexDirectLightInput {
+    const PatchMesh* patches = nullptr;  // the patches the display mesh was built from
+    const RayScene* rays = nullptr;      // over the same patches
+    // Per patch, in the patches' order: the radiosity it emits itself, E = π Le (the light sources); what
+    // its radiosity starts from in the transport (E, plus ρ H_out under a sky or sun), its reflectance and
+    // its exposed area as the transport has them; and ρ H_d, the part of its radiosity that is the emitters'
+    // light reflected once (ρ times the transport's gather of E).
+    std::span<const glm::dvec3> emitted{};
+    std::span<const glm::dvec3> emission{};
+    std::span<const glm::dvec3> reflectance{};
+    std::span<const double> area{};
+    std::span<const glm::dvec3> patch_direct{};
+    std::uint64_t seed = 1;
+};
+
+// Fills display.direct: the emitters' direct light at every vertex, where a patch's mean would blur shadow
+// edges and the light's falloff over its area. At each vertex (moved a thousandth of the way towards its
+// patches' centroid, so a vertex on an edge is not in the plane of the surface beyond) the exact unoccluded
+// point-to-polygon factor of each emitter patch drawn times the share of its shadow rays that nothing blocks;
+// kVertexShadowRays rays drawn over the emitters by power (each drawn when they are few), so every vertex's
+// value is unbiased. vertex_radiance then shows each vertex its patches' reconstruction of the rest of the
+// light plus this. Leaves it empty where no patch emits, or where the emitters are so many or cover so much
+// of the scene that the transport leaves their light to hemisphere rays (a furnace): light from sources that
+// large is smooth. Throws std::invalid_argument when the arrays do not have one entry per patch.
+void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input);
+
+}  // namespace rad

@@ -1,0 +1,356 @@
+#include "rad/display/vertex_direct_light.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "sampling/power_draws.hpp"
+#include "sampling/sampling.hpp"
+#include "transport/uniform/form_factors_emitter_columns.hpp"
+#include "transport/uniform/form_factors_hemisphere.hpp"
+#include "transport/uniform/patch_shapes.hpp"
+#include "util/luminance.hpp"
+
+namespace rad {
+
+namespace {
+
+// A key of the vertices' random streams, apart from every other pass's.
+constexpr std::uint64_t kVertexKey = 0x7e47'd1ec'0000'0001ull;
+// How far a vertex moves towards its patches' centroid before its rays leave, as a share of the way.
+constexpr double kTowardsCentroid = 1e-3;
+// Of kVertexShadowRays, how many tell first whether a vertex sees all of the light, or none.
+constexpr int kVertexFirstRays = 16;
+
+// Up to this many emitter patches are drawn from directly; more are drawn in two steps, a chunk of about √N
+// neighbouring patches of one surface first, so a vertex weighs about 2 √N of them, not all.
+constexpr std::size_t kDirectlyDrawnEmitters = 64;
+
+// Neighbouring emitter patches of one surface [begin, end) in the emitter list, as one source for drawing.
+struct EmitterChunk {
+    std::uint32_t begin = 0, end = 0;
+    PatchShape shape;  // centroid, area, the radius of a ball holding them; the normal if they share one
+    bool facing_one_way = true;
+    double luminance = 0.0;  // area-weighted mean
+};
+
+struct Emitters {
+    std::vector<std::uint32_t> patches;
+    std::vector<PatchShape> shapes;
+    std::vector<double> luminance;
+    std::vector<EmitterChunk> chunks;
+};
+
+EmitterChunk make_chunk(const Emitters& e, std::uint32_t begin, std::uint32_t end) {
+    EmitterChunk c;
+    c.begin = begin;
+    c.end = end;
+    glm::dvec3 normal(0.0);
+    for (std::uint32_t k = begin; k < end; ++k) {
+        c.shape.area += e.shapes[k].area;
+        c.shape.centroid += e.shapes[k].area * e.shapes[k].centroid;
+        normal += e.shapes[k].area * e.shapes[k].normal;
+        c.luminance += e.shapes[k].area * e.luminance[k];
+    }
+    c.shape.centroid /= c.shape.area;
+    c.luminance /= c.shape.area;
+    for (std::uint32_t k = begin; k < end; ++k) {
+        c.shape.radius = std::max(c.shape.radius,
+                                  glm::length(e.shapes[k].centroid - c.shape.centroid) + e.shapes[k].radius);
+    }
+    // Patches facing many ways (a lamp's globe) send light every way: no cosine at the source.
+    c.facing_one_way = glm::length(normal) >= 0.9 * c.shape.area;
+    c.shape.normal = c.facing_one_way ? glm::normalize(normal) : glm::dvec3(0.0);
+    return c;
+}
+
+void make_chunks(Emitters& e, const PatchMesh& patches) {
+    const std::size_t n = e.patches.size();
+    const std::size_t size = n <= kDirectlyDrawnEmitters
+                                 ? 1
+                                 : static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+    for (std::uint32_t begin = 0; begin < n;) {
+        std::uint32_t end = begin + 1;
+        const std::uint32_t surface = patches.patches[e.patches[begin]].surface;
+        while (end < n && end - begin < size && patches.patches[e.patches[end]].surface == surface) ++end;
+        e.chunks.push_back(make_chunk(e, begin, end));
+        begin = end;
+    }
+}
+
+Emitters find_emitters(const PatchMesh& patches, std::span<const glm::dvec3> emitted) {
+    Emitters out;
+    const std::vector<PatchShape> all = patch_shapes(patches);
+    for (std::uint32_t q = 0; q < patches.size(); ++q) {
+        const double l = luminance(emitted[q]);
+        if (!(l > 0.0)) continue;
+        out.patches.push_back(q);
+        out.shapes.push_back(all[q]);
+        out.luminance.push_back(l);
+    }
+    make_chunks(out, patches);
+    return out;
+}
+
+struct Candidate {
+    glm::dvec3 light{0.0};  // E_j U times what each open ray adds, as a share
+    std::size_t first_ray = 0, rays = 0;
+};
+
+struct Scratch {
+    std::vector<double> weight;  // per chunk
+    std::vector<PowerDraw> draws;
+    std::vector<double> member_weight;  // per patch of a drawn chunk
+    std::vector<PowerDraw> member_draws;
+    std::vector<Candidate> candidates;
+    std::vector<Ray> rays;
+    std::vector<std::uint8_t> blocked;
+    std::vector<glm::dvec2> strata;
+};
+
+// Where vertex v's rays start: its position moved towards the centroid of the patches it shows.
+glm::dvec3 vertex_origin(const DisplayMesh& display, const PatchMesh& patches, std::size_t v) {
+    const glm::dvec3 position(display.positions[v]);
+    glm::dvec3 centre(0.0);
+    double total = 0.0;
+    for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
+        if (!(display.weight[k] > 0.0f)) continue;
+        centre += static_cast<double>(display.weight[k]) * patches.patches[display.weight_patch[k]].centroid;
+        total += display.weight[k];
+    }
+    if (!(total > 0.0)) return position;
+    return position + kTowardsCentroid * (centre / total - position);
+}
+
+// A chunk's weight at a point with unit normal n: its patch's own where it holds one, else the disk
+// approximation from its ball, lifted as factor_weight lifts it.
+double chunk_weight(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
+                    const EmitterChunk& c) {
+    if (c.end - c.begin == 1)
+        return emitters.luminance[c.begin] * factor_weight(origin, n, 0.0, emitters.shapes[c.begin]);
+    const glm::dvec3 d = c.shape.centroid - origin;
+    const double distance = glm::length(d);
+    const double gap = std::max(0.0, distance - c.shape.radius);
+    const double lift = gap > 0.0 ? c.shape.radius / gap : 1.0;
+    const glm::dvec3 towards = distance > 0.0 ? d / distance : n;
+    const double ci = std::clamp(glm::dot(n, towards) + lift, 0.0, 1.0);
+    const double cj =
+        c.facing_one_way ? std::clamp(-glm::dot(c.shape.normal, towards) + lift, 0.0, 1.0) : 1.0;
+    return c.luminance * c.shape.area * ci * cj / (std::numbers::pi * gap * gap + c.shape.area);
+}
+
+// The chunks' weights at a point with unit normal n (into s.weight); returns their sum.
+double emitter_weights(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters, Scratch& s) {
+    s.weight.assign(emitters.chunks.size(), 0.0);
+    double total = 0.0;
+    for (std::size_t k = 0; k < emitters.chunks.size(); ++k) {
+        s.weight[k] = chunk_weight(origin, n, emitters, emitters.chunks[k]);
+        total += s.weight[k];
+    }
+    return total;
+}
+
+struct Estimate {
+    glm::dvec3 irradiance{0.0};
+    bool uniform = true;  // every ray open, or every ray blocked
+};
+
+// One estimate of H_d from `rays` shadow rays drawn over the emitters by power (s.weight, summing to
+// `total`): each drawn emitter's unoccluded factor times the share of its rays that reach it.
+Estimate estimate_direct(const glm::dvec3& origin, const glm::dvec3& n, int rays, double total,
+                         const Emitters& emitters, std::span<const glm::dvec3> emitted, const RayScene& scene,
+                         double offset, RandomStream& random, Scratch& s) {
+    const bool every = draw_by_power(s.weight, total, rays, random.uniform(), s.draws);
+    s.candidates.clear();
+    s.rays.clear();
+    const glm::dvec3 start = origin + offset * n;
+    const auto aim = [&](std::uint32_t k, std::uint32_t count, double chance) {
+        const PatchShape& shape = emitters.shapes[k];
+        const ConvexPolygon source = clip_to_front(shape.polygon, origin, n);
+        if (source.empty()) return;
+        const double unoccluded = point_polygon_factor(origin, n, source.span());
+        if (!(unoccluded > 0.0)) return;
+        const double scale = 1.0 / (static_cast<double>(count) * chance);
+        s.candidates.push_back({emitted[emitters.patches[k]] * (unoccluded * scale), s.rays.size(), count});
+        s.strata.resize(count);
+        stratified_square(random, s.strata);
+        for (const glm::dvec2& u : s.strata) {
+            const glm::dvec3 end = point_on_convex_polygon(source.span(), u) + offset * shape.normal;
+            s.rays.push_back(Ray{start, 0.0f, end - start, 1.0f});
+        }
+    };
+    for (const PowerDraw& d : s.draws) {
+        const EmitterChunk& chunk = emitters.chunks[d.source];
+        // The chance that a draw of `rays` lands on this chunk at least once; 1 where every chunk was drawn.
+        const double chunk_chance = every ? 1.0 : std::min(1.0, rays * s.weight[d.source] / total);
+        if (chunk.end - chunk.begin == 1) {
+            aim(chunk.begin, d.count, chunk_chance);
+            continue;
+        }
+        // The chunk's own draws go over its patches, by their weights.
+        s.member_weight.resize(chunk.end - chunk.begin);
+        double members = 0.0;
+        for (std::uint32_t k = chunk.begin; k < chunk.end; ++k) {
+            s.member_weight[k - chunk.begin] =
+                emitters.luminance[k] * factor_weight(origin, n, 0.0, emitters.shapes[k]);
+            members += s.member_weight[k - chunk.begin];
+        }
+        if (!(members > 0.0)) continue;
+        const auto draws = static_cast<int>(d.count);
+        const bool every_member =
+            draw_by_power(s.member_weight, members, draws, random.uniform(), s.member_draws);
+        for (const PowerDraw& m : s.member_draws) {
+            const double member_chance =
+                every_member ? 1.0 : std::min(1.0, draws * s.member_weight[m.source] / members);
+            aim(chunk.begin + m.source, m.count, chunk_chance * member_chance);
+        }
+    }
+    s.blocked.resize(s.rays.size());
+    scene.occluded(s.rays, s.blocked);
+    Estimate estimate;
+    const auto open_rays = std::count(s.blocked.begin(), s.blocked.end(), std::uint8_t{0});
+    estimate.uniform = open_rays == 0 || static_cast<std::size_t>(open_rays) == s.blocked.size();
+    for (const Candidate& c : s.candidates) {
+        const auto first = s.blocked.begin() + static_cast<std::ptrdiff_t>(c.first_ray);
+        const auto open = std::count(first, first + static_cast<std::ptrdiff_t>(c.rays), std::uint8_t{0});
+        estimate.irradiance += static_cast<double>(open) * c.light;
+    }
+    return estimate;
+}
+
+enum class Visibility : std::uint8_t { none, whole, partial };
+
+struct PointLight {
+    glm::dvec3 irradiance{0.0};
+    Visibility visibility = Visibility::none;
+};
+
+// H_d at a point with unit normal n, and how much of the light it sees. A first few rays tell whether the
+// point sees all of the light or none of it (most points); only where they disagree (a penumbra) are the
+// rest traced.
+PointLight direct_irradiance(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
+                             std::span<const glm::dvec3> emitted, const RayScene& scene, double offset,
+                             RandomStream& random, Scratch& s) {
+    const double total = emitter_weights(origin, n, emitters, s);
+    if (!(total > 0.0)) return {};
+    const Estimate first =
+        estimate_direct(origin, n, kVertexFirstRays, total, emitters, emitted, scene, offset, random, s);
+    if (first.uniform) {
+        return {first.irradiance, first.irradiance == glm::dvec3(0.0) ? Visibility::none : Visibility::whole};
+    }
+    const Estimate rest = estimate_direct(origin, n, kVertexShadowRays - kVertexFirstRays, total, emitters,
+                                          emitted, scene, offset, random, s);
+    const double share = static_cast<double>(kVertexFirstRays) / kVertexShadowRays;
+    return {share * first.irradiance + (1.0 - share) * rest.irradiance, Visibility::partial};
+}
+
+bool is_textured(const DisplayMesh& display, std::uint32_t q) {
+    return !display.patch_irradiance.empty() && display.patch_irradiance[q].textured;
+}
+
+// Per patch, whether a shadow's edge crosses it: one of its vertices sees part of the light, or some see
+// all of it and others none.
+std::vector<std::uint8_t> patches_in_penumbra(const DisplayMesh& display,
+                                              const std::vector<PointLight>& light) {
+    std::vector<std::uint8_t> seen(display.patch_count, 0);  // a bit per Visibility
+    for (std::size_t t = 0; t < display.triangles.size(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const auto bit = static_cast<unsigned>(light[display.triangles[t][k]].visibility);
+            seen[display.triangle_patch[t]] |= static_cast<std::uint8_t>(1u << bit);
+        }
+    }
+    constexpr auto none = static_cast<std::uint8_t>(1u << static_cast<unsigned>(Visibility::none));
+    constexpr auto whole = static_cast<std::uint8_t>(1u << static_cast<unsigned>(Visibility::whole));
+    for (std::uint8_t& s : seen) s = (s & ~(none | whole)) != 0 || s == (none | whole);
+    return seen;
+}
+
+// The triangles drawn between exact values at their corners do not keep a patch's mean where the light
+// curves over it (a chord lies below a concave falloff, above a convex one): each vertex moves by the mean
+// of its patches' shortfalls, weighted by the area of its triangles in each, so the patches show about the
+// light they hold. Where a shadow's edge crosses a patch its corners keep their own values, and so do
+// vertices in umbra: the mean of a step is no value of either side, and the shadow stays sharp.
+void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> patch_direct,
+                      const std::vector<PointLight>& light, std::vector<glm::dvec3>& vertex) {
+    const std::vector<std::uint8_t> penumbra = patches_in_penumbra(display, light);
+    std::vector<std::uint8_t> kept(vertex.size(), 0);
+    for (std::size_t v = 0; v < vertex.size(); ++v) kept[v] = light[v].visibility == Visibility::none;
+    std::vector<glm::dvec3> drawn(display.patch_count, glm::dvec3(0.0));
+    std::vector<double> area(display.patch_count, 0.0), triangle_area(display.triangles.size());
+    for (std::size_t t = 0; t < display.triangles.size(); ++t) {
+        const glm::uvec3& c = display.triangles[t];
+        const glm::dvec3 a(display.positions[c[0]]), b(display.positions[c[1]]), d(display.positions[c[2]]);
+        triangle_area[t] = 0.5 * glm::length(glm::cross(b - a, d - a));
+        const std::uint32_t q = display.triangle_patch[t];
+        drawn[q] += triangle_area[t] * (vertex[c[0]] + vertex[c[1]] + vertex[c[2]]) / 3.0;
+        area[q] += triangle_area[t];
+    }
+    std::vector<glm::dvec3> shift(vertex.size(), glm::dvec3(0.0));
+    std::vector<double> weight(vertex.size(), 0.0);
+    for (std::size_t t = 0; t < display.triangles.size(); ++t) {
+        const std::uint32_t q = display.triangle_patch[t];
+        if (!(area[q] > 0.0)) continue;
+        glm::dvec3 held = patch_direct[q];
+        if (is_textured(display, q)) held *= display.patch_irradiance[q].inverse_albedo;
+        const glm::dvec3 shortfall = held - drawn[q] / area[q];
+        for (int k = 0; k < 3; ++k) {
+            shift[display.triangles[t][k]] += triangle_area[t] * shortfall;
+            weight[display.triangles[t][k]] += triangle_area[t];
+        }
+    }
+    for (std::size_t v = 0; v < vertex.size(); ++v) {
+        if (weight[v] > 0.0 && !kept[v]) vertex[v] += shift[v] / weight[v];
+    }
+}
+
+}  // namespace
+
+void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input) {
+    const PatchMesh& patches = *input.patches;
+    const std::size_t n = patches.size();
+    if (input.emitted.size() != n || input.emission.size() != n || input.reflectance.size() != n ||
+        input.area.size() != n || input.patch_direct.size() != n || display.patch_count != n) {
+        throw std::invalid_argument("add_vertex_direct_light: the arrays do not have one entry per patch");
+    }
+    display.direct = {};
+    const Emitters emitters = find_emitters(patches, input.emitted);
+    if (!sample_emitter_columns(patches, emitters.patches)) return;
+    const double offset = ray_offset(patches);
+    std::vector<PointLight> light(display.vertex_count());
+    tbb::enumerable_thread_specific<Scratch> scratch;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, display.vertex_count(), 64),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          Scratch& s = scratch.local();
+                          for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                              if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;
+                              const glm::dvec3 normal = glm::normalize(glm::dvec3(display.normals[v]));
+                              RandomStream random(input.seed ^ kVertexKey, v);
+                              light[v] =
+                                  direct_irradiance(vertex_origin(display, patches, v), normal, emitters,
+                                                    input.emitted, *input.rays, offset, random, s);
+                          }
+                      });
+    std::vector<glm::dvec3> exact(display.vertex_count(), glm::dvec3(0.0));
+    for (std::size_t v = 0; v < display.vertex_count(); ++v) {
+        if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;
+        const std::uint32_t q = display.weight_patch[display.weight_begin[v]];
+        exact[v] = is_textured(display, q) ? light[v].irradiance : input.reflectance[q] * light[v].irradiance;
+    }
+    keep_patch_means(display, input.patch_direct, light, exact);
+    std::vector<glm::vec3> vertex(display.vertex_count());
+    for (std::size_t v = 0; v < vertex.size(); ++v) vertex[v] = glm::vec3(glm::max(exact[v], 0.0));
+    display.direct.patch.assign(input.patch_direct.begin(), input.patch_direct.end());
+    display.direct.emission.assign(input.emission.begin(), input.emission.end());
+    display.direct.area.assign(input.area.begin(), input.area.end());
+    display.direct.vertex = std::move(vertex);
+}
+
+}  // namespace rad

@@ -1,0 +1,162 @@
+// The emitters' direct light at display vertices (add_vertex_direct_light), on a shadow edge with a closed
+// form (assets/hard/shadow_edge.obj): a floor lit by a square light, half of it shaded by a plate. The
+// floor's radiosity is its direct light alone, so at every floor vertex the shown radiance has an exact
+// value.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+#include <string>
+
+#include "rad/display/display_mesh.hpp"
+#include "rad/display/vertex_direct_light.hpp"
+#include "rad/geometry/point_polygon_factor.hpp"
+#include "rad/ray/ray_scene.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "rad/scene/scene_loader.hpp"
+#include "solved_scene.hpp"
+
+namespace rad {
+namespace {
+
+const std::string kShadowEdge = std::string(RAD_SOURCE_DIR) + "/assets/hard/shadow_edge.obj";
+
+// L = ρ E F / π at floor point p, F the factor of the part of the light the plate leaves visible; E = π.
+double exact_radiance(const glm::vec3& p) {
+    const double x0 = std::max(-0.1, 0.06 - static_cast<double>(p.x));
+    if (x0 >= 0.1) return 0.0;
+    const glm::dvec3 light[4] = {{x0, 0.5, -0.1}, {0.1, 0.5, -0.1}, {0.1, 0.5, 0.1}, {x0, 0.5, 0.1}};
+    return 0.5 * point_polygon_factor(glm::dvec3(p), {0.0, 1.0, 0.0}, light);
+}
+
+struct Shown {
+    std::unique_ptr<test::SolvedScene> solved;
+    DisplayMesh display;
+};
+
+// The scene solved at `patch_size`, its display mesh with the direct light at the vertices or without.
+Shown show(Scene scene, double patch_size, bool direct_at_vertices) {
+    Shown s;
+    s.solved = test::solve_scene(std::move(scene), Subdivision::uniform, patch_size);
+    const Transport& t = *s.solved->system.transport;
+    const PatchMesh& patches = *s.solved->system.patches;
+    s.display = build_display_mesh(patches);
+    if (!direct_at_vertices) return s;
+    std::vector<glm::dvec3> emitted(patches.size());
+    for (std::size_t q = 0; q < patches.size(); ++q)
+        emitted[q] = s.solved->scene.surfaces[patches.patches[q].surface].material.emitted_radiosity();
+    std::vector<glm::dvec3> direct(t.size());
+    t.gather(emitted, direct);
+    for (std::size_t q = 0; q < direct.size(); ++q) direct[q] *= t.reflectance[q];
+    const RayScene rays(patches);
+    add_vertex_direct_light(s.display, {.patches = &patches,
+                                        .rays = &rays,
+                                        .emitted = emitted,
+                                        .emission = t.emission,
+                                        .reflectance = t.reflectance,
+                                        .area = t.area,
+                                        .patch_direct = direct,
+                                        .seed = 1});
+    return s;
+}
+
+struct FloorErrors {
+    double penumbra_rms = 0.0;  // over vertices within 0.15 of the plate's edge, relative to the lit value
+    double umbra_max = 0.0;     // the largest radiance shown where the light is hidden (x < -0.04)
+    double mean_rms = 0.0;      // the RMS error of the floor patches' drawn means, relative to the lit value
+};
+
+FloorErrors floor_errors(const Shown& s) {
+    const std::vector<glm::vec3> shown = vertex_radiance(s.display, s.solved->radiosity);
+    const double lit = exact_radiance({0.2f, 0.0f, 0.0f});
+    FloorErrors e;
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t v = 0; v < s.display.vertex_count(); ++v) {
+        const glm::vec3& p = s.display.positions[v];
+        if (std::abs(p.y) > 1e-6f || s.display.normals[v].y < 0.99f) continue;  // the floor's vertices
+        if (std::abs(p.x) > 0.45f || std::abs(p.z) > 0.45f) continue;           // off the border
+        const double error = shown[v].y - exact_radiance(p);
+        if (p.x < -0.04f) e.umbra_max = std::max(e.umbra_max, static_cast<double>(shown[v].y));
+        if (std::abs(p.x - 0.03f) < 0.15f) {
+            sum += (error / lit) * (error / lit);
+            ++count;
+        }
+    }
+    EXPECT_GT(count, 10);
+    e.penumbra_rms = std::sqrt(sum / count);
+    // What each floor patch's triangles show on average, against the radiance it holds.
+    std::vector<double> drawn(s.display.patch_count, 0.0), area(s.display.patch_count, 0.0);
+    for (std::size_t t = 0; t < s.display.triangles.size(); ++t) {
+        const glm::uvec3& c = s.display.triangles[t];
+        const glm::vec3 &a = s.display.positions[c[0]], &b = s.display.positions[c[1]],
+                        &d = s.display.positions[c[2]];
+        const double triangle = 0.5 * glm::length(glm::cross(glm::dvec3(b - a), glm::dvec3(d - a)));
+        drawn[s.display.triangle_patch[t]] +=
+            triangle * (shown[c[0]].y + shown[c[1]].y + shown[c[2]].y) / 3.0;
+        area[s.display.triangle_patch[t]] += triangle;
+    }
+    const PatchMesh& patches = *s.solved->system.patches;
+    double squares = 0.0;
+    for (std::uint32_t q = patches.surface_begin[0]; q < patches.surface_begin[1]; ++q) {
+        const double held = s.solved->radiosity[q].y / std::numbers::pi;
+        squares += std::pow((drawn[q] / area[q] - held) / lit, 2);
+    }
+    e.mean_rms = std::sqrt(squares / (patches.surface_begin[1] - patches.surface_begin[0]));
+    return e;
+}
+
+TEST(VertexDirectLight, TheShadowEdgeIsSharpAtTheVertices) {
+    const FloorErrors with = floor_errors(show(load_scene(kShadowEdge), 0.1, true));
+    const FloorErrors without = floor_errors(show(load_scene(kShadowEdge), 0.1, false));
+    std::printf("penumbra RMS %.4f with, %.4f without; umbra max %.3g / %.3g; patch means RMS %.4f / %.4f\n",
+                with.penumbra_rms, without.penumbra_rms, with.umbra_max, without.umbra_max, with.mean_rms,
+                without.mean_rms);
+    EXPECT_LT(with.penumbra_rms, without.penumbra_rms);
+    EXPECT_EQ(with.umbra_max, 0.0);  // every ray blocked: no light, exactly
+    EXPECT_LT(with.mean_rms, without.mean_rms);
+}
+
+TEST(VertexDirectLight, ShowsOnlyWhatTheRadiosityHoldsOfTheDirectLight) {
+    Shown s = show(load_scene(kShadowEdge), 0.1, true);
+    ASSERT_FALSE(s.display.direct.vertex.empty());
+    const Transport& t = *s.solved->system.transport;
+    EXPECT_EQ(direct_light_share(s.display, t.emission), 0.0);
+    EXPECT_NEAR(direct_light_share(s.display, s.solved->radiosity), 1.0, 1e-9);
+    // Before any bounce the vertices show the emission alone, as without direct light at vertices.
+    DisplayMesh plain = s.display;
+    plain.direct = {};
+    EXPECT_EQ(vertex_radiance(s.display, t.emission), vertex_radiance(plain, t.emission));
+    // The floor's light is all direct: a view of the first bounce alone (share 1) shows it as the whole
+    // solution does.
+    const std::vector<glm::vec3> first = vertex_radiance(s.display, s.display.direct.patch, 1.0);
+    const std::vector<glm::vec3> whole = vertex_radiance(s.display, s.solved->radiosity);
+    int floor_vertices = 0;
+    for (std::size_t v = 0; v < s.display.vertex_count(); ++v) {
+        if (std::abs(s.display.positions[v].y) > 1e-6f || s.display.normals[v].y < 0.99f) continue;
+        EXPECT_NEAR(first[v].y, whole[v].y, 1e-6 + 1e-4 * whole[v].y);
+        ++floor_vertices;
+    }
+    EXPECT_GT(floor_vertices, 100);
+}
+
+TEST(VertexDirectLight, LeavesSourcesAsLargeAsAFurnaceToThePatches) {
+    // Every surface of the furnace emits: its light is smooth, and the vertices keep the patches' values.
+    const Shown s = show(make_builtin_scene("furnace"), 0.0, true);
+    EXPECT_TRUE(s.display.direct.vertex.empty());
+}
+
+TEST(VertexDirectLight, RefusesArraysOfAnotherSize) {
+    Shown s = show(load_scene(kShadowEdge), 0.1, false);
+    const PatchMesh& patches = *s.solved->system.patches;
+    const RayScene rays(patches);
+    const std::vector<glm::dvec3> short_array(2);
+    EXPECT_THROW(
+        add_vertex_direct_light(s.display, {.patches = &patches, .rays = &rays, .emitted = short_array}),
+        std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rad
