@@ -148,6 +148,46 @@ TEST(VertexDirectLight, LeavesSourcesAsLargeAsAFurnaceToThePatches) {
     EXPECT_TRUE(s.display.direct.vertex.empty());
 }
 
+// 400 lamps of 4 cm in an empty room (assets/hard/many_lights.obj): more emitter patches than are drawn from
+// directly, so they are drawn in chunks first. Nothing blocks them, so the exact value at a floor point is
+// the sum of every lamp's point-to-polygon factor times its E.
+TEST(VertexDirectLight, ManySmallLampsAreDrawnInChunksWithoutBias) {
+    const Scene scene = load_scene(std::string(RAD_SOURCE_DIR) + "/assets/hard/many_lights.obj");
+    const PatchMesh patches = build_patches(scene, {});
+    std::vector<glm::dvec3> emitted(patches.size());
+    std::size_t emitters = 0;
+    for (std::size_t q = 0; q < patches.size(); ++q) {
+        emitted[q] = scene.surfaces[patches.patches[q].surface].material.emitted_radiosity();
+        emitters += emitted[q].y > 0.0 ? 1 : 0;
+    }
+    ASSERT_GT(emitters, 64u);
+    std::vector<glm::dvec3> points, normals;
+    for (int i = 0; i < 12; ++i)
+        for (int k = 0; k < 12; ++k) {
+            points.emplace_back(0.2 + 0.3 * i, 1e-4, 0.2 + 0.3 * k);
+            normals.emplace_back(0.0, 1.0, 0.0);
+        }
+    const RayScene rays(patches);
+    const std::vector<glm::dvec3> estimate = direct_irradiance_at(patches, rays, emitted, points, normals);
+    double sum = 0.0, exact_sum = 0.0, worst = 0.0;
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        double exact = 0.0;
+        for (std::size_t q = 0; q < patches.size(); ++q) {
+            if (!(emitted[q].y > 0.0)) continue;
+            glm::dvec3 corners[4];
+            for (int c = 0; c < 4; ++c) corners[c] = patches.points[patches.corners[q][c]];
+            exact += emitted[q].y * point_polygon_factor(points[p], normals[p], corners);
+        }
+        sum += estimate[p].y;
+        exact_sum += exact;
+        worst = std::max(worst, std::abs(estimate[p].y / exact - 1.0));
+    }
+    std::printf("%zu emitter patches: mean %.5f against %.5f exact, worst point %.4f\n", emitters,
+                sum / points.size(), exact_sum / points.size(), worst);
+    EXPECT_NEAR(sum / exact_sum, 1.0, 0.005);
+    EXPECT_LT(worst, 0.02);
+}
+
 TEST(VertexDirectLight, RefusesArraysOfAnotherSize) {
     Shown s = show(load_scene(kShadowEdge), 0.1, false);
     const PatchMesh& patches = *s.solved->system.patches;

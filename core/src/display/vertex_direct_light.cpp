@@ -8,10 +8,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
-#include <optional>
 #include <stdexcept>
 #include <vector>
 
+#include "display/vertex_emitters.hpp"
 #include "sampling/power_draws.hpp"
 #include "sampling/sampling.hpp"
 #include "transport/uniform/form_factors_emitter_columns.hpp"
@@ -29,76 +29,6 @@ constexpr std::uint64_t kVertexKey = 0x7e47'd1ec'0000'0001ull;
 constexpr double kTowardsCentroid = 1e-3;
 // Of kVertexShadowRays, how many tell first whether a vertex sees all of the light, or none.
 constexpr int kVertexFirstRays = 16;
-
-// Up to this many emitter patches are drawn from directly; more are drawn in two steps, a chunk of about √N
-// neighbouring patches of one surface first, so a vertex weighs about 2 √N of them, not all.
-constexpr std::size_t kDirectlyDrawnEmitters = 64;
-
-// Neighbouring emitter patches of one surface [begin, end) in the emitter list, as one source for drawing.
-struct EmitterChunk {
-    std::uint32_t begin = 0, end = 0;
-    PatchShape shape;  // centroid, area, the radius of a ball holding them; the normal if they share one
-    bool facing_one_way = true;
-    double luminance = 0.0;  // area-weighted mean
-};
-
-struct Emitters {
-    std::vector<std::uint32_t> patches;
-    std::vector<PatchShape> shapes;
-    std::vector<double> luminance;
-    std::vector<EmitterChunk> chunks;
-};
-
-EmitterChunk make_chunk(const Emitters& e, std::uint32_t begin, std::uint32_t end) {
-    EmitterChunk c;
-    c.begin = begin;
-    c.end = end;
-    glm::dvec3 normal(0.0);
-    for (std::uint32_t k = begin; k < end; ++k) {
-        c.shape.area += e.shapes[k].area;
-        c.shape.centroid += e.shapes[k].area * e.shapes[k].centroid;
-        normal += e.shapes[k].area * e.shapes[k].normal;
-        c.luminance += e.shapes[k].area * e.luminance[k];
-    }
-    c.shape.centroid /= c.shape.area;
-    c.luminance /= c.shape.area;
-    for (std::uint32_t k = begin; k < end; ++k) {
-        c.shape.radius = std::max(c.shape.radius,
-                                  glm::length(e.shapes[k].centroid - c.shape.centroid) + e.shapes[k].radius);
-    }
-    // Patches facing many ways (a lamp's globe) send light every way: no cosine at the source.
-    c.facing_one_way = glm::length(normal) >= 0.9 * c.shape.area;
-    c.shape.normal = c.facing_one_way ? glm::normalize(normal) : glm::dvec3(0.0);
-    return c;
-}
-
-void make_chunks(Emitters& e, const PatchMesh& patches) {
-    const std::size_t n = e.patches.size();
-    const std::size_t size = n <= kDirectlyDrawnEmitters
-                                 ? 1
-                                 : static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
-    for (std::uint32_t begin = 0; begin < n;) {
-        std::uint32_t end = begin + 1;
-        const std::uint32_t surface = patches.patches[e.patches[begin]].surface;
-        while (end < n && end - begin < size && patches.patches[e.patches[end]].surface == surface) ++end;
-        e.chunks.push_back(make_chunk(e, begin, end));
-        begin = end;
-    }
-}
-
-Emitters find_emitters(const PatchMesh& patches, std::span<const glm::dvec3> emitted) {
-    Emitters out;
-    const std::vector<PatchShape> all = patch_shapes(patches);
-    for (std::uint32_t q = 0; q < patches.size(); ++q) {
-        const double l = luminance(emitted[q]);
-        if (!(l > 0.0)) continue;
-        out.patches.push_back(q);
-        out.shapes.push_back(all[q]);
-        out.luminance.push_back(l);
-    }
-    make_chunks(out, patches);
-    return out;
-}
 
 struct Candidate {
     glm::dvec3 light{0.0};  // E_j U times what each open ray adds, as a share
@@ -128,34 +58,6 @@ glm::dvec3 vertex_origin(const DisplayMesh& display, const PatchMesh& patches, s
     }
     if (!(total > 0.0)) return position;
     return position + kTowardsCentroid * (centre / total - position);
-}
-
-// A chunk's weight at a point with unit normal n: its patch's own where it holds one, else the disk
-// approximation from its ball, lifted as factor_weight lifts it.
-double chunk_weight(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
-                    const EmitterChunk& c) {
-    if (c.end - c.begin == 1)
-        return emitters.luminance[c.begin] * factor_weight(origin, n, 0.0, emitters.shapes[c.begin]);
-    const glm::dvec3 d = c.shape.centroid - origin;
-    const double distance = glm::length(d);
-    const double gap = std::max(0.0, distance - c.shape.radius);
-    const double lift = gap > 0.0 ? c.shape.radius / gap : 1.0;
-    const glm::dvec3 towards = distance > 0.0 ? d / distance : n;
-    const double ci = std::clamp(glm::dot(n, towards) + lift, 0.0, 1.0);
-    const double cj =
-        c.facing_one_way ? std::clamp(-glm::dot(c.shape.normal, towards) + lift, 0.0, 1.0) : 1.0;
-    return c.luminance * c.shape.area * ci * cj / (std::numbers::pi * gap * gap + c.shape.area);
-}
-
-// The chunks' weights at a point with unit normal n (into s.weight); returns their sum.
-double emitter_weights(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters, Scratch& s) {
-    s.weight.assign(emitters.chunks.size(), 0.0);
-    double total = 0.0;
-    for (std::size_t k = 0; k < emitters.chunks.size(); ++k) {
-        s.weight[k] = chunk_weight(origin, n, emitters, emitters.chunks[k]);
-        total += s.weight[k];
-    }
-    return total;
 }
 
 struct Estimate {
@@ -239,7 +141,7 @@ struct PointLight {
 PointLight direct_irradiance(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
                              std::span<const glm::dvec3> emitted, const RayScene& scene, double offset,
                              RandomStream& random, Scratch& s) {
-    const double total = emitter_weights(origin, n, emitters, s);
+    const double total = emitter_weights(origin, n, emitters, s.weight);
     if (!(total > 0.0)) return {};
     const Estimate first =
         estimate_direct(origin, n, kVertexFirstRays, total, emitters, emitted, scene, offset, random, s);
@@ -256,23 +158,6 @@ bool is_textured(const DisplayMesh& display, std::uint32_t q) {
     return !display.patch_irradiance.empty() && display.patch_irradiance[q].textured;
 }
 
-// Per patch, whether a shadow's edge crosses it: one of its vertices sees part of the light, or some see
-// all of it and others none.
-std::vector<std::uint8_t> patches_in_penumbra(const DisplayMesh& display,
-                                              const std::vector<PointLight>& light) {
-    std::vector<std::uint8_t> seen(display.patch_count, 0);  // a bit per Visibility
-    for (std::size_t t = 0; t < display.triangles.size(); ++t) {
-        for (int k = 0; k < 3; ++k) {
-            const auto bit = static_cast<unsigned>(light[display.triangles[t][k]].visibility);
-            seen[display.triangle_patch[t]] |= static_cast<std::uint8_t>(1u << bit);
-        }
-    }
-    constexpr auto none = static_cast<std::uint8_t>(1u << static_cast<unsigned>(Visibility::none));
-    constexpr auto whole = static_cast<std::uint8_t>(1u << static_cast<unsigned>(Visibility::whole));
-    for (std::uint8_t& s : seen) s = (s & ~(none | whole)) != 0 || s == (none | whole);
-    return seen;
-}
-
 // The triangles drawn between exact values at their corners do not keep a patch's mean where the light
 // curves over it (a chord lies below a concave falloff, above a convex one): each vertex moves by the mean
 // of its patches' shortfalls, weighted by the area of its triangles in each, so the patches show about the
@@ -280,7 +165,6 @@ std::vector<std::uint8_t> patches_in_penumbra(const DisplayMesh& display,
 // vertices in umbra: the mean of a step is no value of either side, and the shadow stays sharp.
 void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> patch_direct,
                       const std::vector<PointLight>& light, std::vector<glm::dvec3>& vertex) {
-    const std::vector<std::uint8_t> penumbra = patches_in_penumbra(display, light);
     std::vector<std::uint8_t> kept(vertex.size(), 0);
     for (std::size_t v = 0; v < vertex.size(); ++v) kept[v] = light[v].visibility == Visibility::none;
     std::vector<glm::dvec3> drawn(display.patch_count, glm::dvec3(0.0));
@@ -311,7 +195,41 @@ void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> pa
     }
 }
 
+std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays,
+                                  std::span<const glm::dvec3> emitted, const Emitters& emitters,
+                                  std::span<const glm::dvec3> points, std::span<const glm::dvec3> normals,
+                                  std::uint64_t seed) {
+    const double offset = ray_offset(patches);
+    std::vector<PointLight> light(points.size());
+    tbb::enumerable_thread_specific<Scratch> scratch;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 64),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          Scratch& s = scratch.local();
+                          for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                              RandomStream random(seed ^ kVertexKey, v);
+                              light[v] = direct_irradiance(points[v], normals[v], emitters, emitted, rays,
+                                                           offset, random, s);
+                          }
+                      });
+    return light;
+}
+
 }  // namespace
+
+std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const RayScene& rays,
+                                             std::span<const glm::dvec3> emitted,
+                                             std::span<const glm::dvec3> points,
+                                             std::span<const glm::dvec3> normals, std::uint64_t seed) {
+    if (emitted.size() != patches.size() || normals.size() != points.size()) {
+        throw std::invalid_argument("direct_irradiance_at: the arrays' sizes do not match");
+    }
+    std::vector<glm::dvec3> irradiance(points.size(), glm::dvec3(0.0));
+    const Emitters emitters = find_emitters(patches, emitted);
+    if (!sample_emitter_columns(patches, emitters.patches)) return irradiance;
+    const std::vector<PointLight> light = lights_at(patches, rays, emitted, emitters, points, normals, seed);
+    for (std::size_t k = 0; k < points.size(); ++k) irradiance[k] = light[k].irradiance;
+    return irradiance;
+}
 
 void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input) {
     const PatchMesh& patches = *input.patches;
@@ -323,21 +241,13 @@ void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput&
     display.direct = {};
     const Emitters emitters = find_emitters(patches, input.emitted);
     if (!sample_emitter_columns(patches, emitters.patches)) return;
-    const double offset = ray_offset(patches);
-    std::vector<PointLight> light(display.vertex_count());
-    tbb::enumerable_thread_specific<Scratch> scratch;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, display.vertex_count(), 64),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          Scratch& s = scratch.local();
-                          for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                              if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;
-                              const glm::dvec3 normal = glm::normalize(glm::dvec3(display.normals[v]));
-                              RandomStream random(input.seed ^ kVertexKey, v);
-                              light[v] =
-                                  direct_irradiance(vertex_origin(display, patches, v), normal, emitters,
-                                                    input.emitted, *input.rays, offset, random, s);
-                          }
-                      });
+    std::vector<glm::dvec3> origins(display.vertex_count()), normals(display.vertex_count());
+    for (std::size_t v = 0; v < display.vertex_count(); ++v) {
+        origins[v] = vertex_origin(display, patches, v);
+        normals[v] = glm::normalize(glm::dvec3(display.normals[v]));
+    }
+    const std::vector<PointLight> light =
+        lights_at(patches, *input.rays, input.emitted, emitters, origins, normals, input.seed);
     std::vector<glm::dvec3> exact(display.vertex_count(), glm::dvec3(0.0));
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;

@@ -21,6 +21,9 @@ namespace rad {
 //         outlines), the larger patch takes part in that vertex too and is drawn as a fan from its centroid
 //         (which shows its own value) through every point of its outline, so no crack opens there.
 // flat:   every patch has its own corners and shows its own radiosity (outlines are not needed).
+// In both, where a corner of one surface lies inside another's edge (surfaces share no corners), the other's
+// triangle is drawn as a fan through that point too, with the colour its edge had there: no crack pixels
+// along seams.
 enum class ColourMode { smooth, flat };
 
 // How smooth mode sets a vertex from the patches around it.

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <span>
+#include <vector>
 
 #include "rad/display/display_mesh.hpp"
 #include "rad/mesh/patch_mesh.hpp"
@@ -32,11 +33,23 @@ struct VertexDirectLightInput {
 // edges and the light's falloff over its area. At each vertex (moved a thousandth of the way towards its
 // patches' centroid, so a vertex on an edge is not in the plane of the surface beyond) the exact unoccluded
 // point-to-polygon factor of each emitter patch drawn times the share of its shadow rays that nothing blocks;
-// kVertexShadowRays rays drawn over the emitters by power (each drawn when they are few), so every vertex's
-// value is unbiased. vertex_radiance then shows each vertex its patches' reconstruction of the rest of the
-// light plus this. Leaves it empty where no patch emits, or where the emitters are so many or cover so much
+// up to kVertexShadowRays rays drawn over the emitters by power (each drawn when they are few), so every
+// vertex's value is unbiased; 16 first, and the rest only where they disagree (a penumbra). Each vertex that
+// sees some of the light then moves by its patches' shortfalls (what their triangles draw against ρ H_d,
+// what they hold), so a falloff's chords do not darken or brighten them; vertices in umbra keep 0.
+// vertex_radiance shows each vertex its patches' reconstruction of the rest of the light plus this. Leaves it
+// empty where no patch emits, or where the emitters are so many or cover so much
 // of the scene that the transport leaves their light to hemisphere rays (a furnace): light from sources that
 // large is smooth. Throws std::invalid_argument when the arrays do not have one entry per patch.
 void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input);
+
+// H_d, the emitters' direct irradiance, at points with unit normals as add_vertex_direct_light estimates it
+// at each vertex (before the patches' means are kept; the points are where rays leave, off their surface by
+// the ray offset); 0 everywhere where it leaves the light to the patches. `emitted` is E per patch. Throws
+// std::invalid_argument when the sizes do not match.
+std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const RayScene& rays,
+                                             std::span<const glm::dvec3> emitted,
+                                             std::span<const glm::dvec3> points,
+                                             std::span<const glm::dvec3> normals, std::uint64_t seed = 1);
 
 }  // namespace rad

@@ -1,0 +1,43 @@
+#pragma once
+
+// The emitter patches a display vertex draws its direct light from. Private to the library.
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <span>
+#include <vector>
+
+#include "rad/mesh/patch_mesh.hpp"
+#include "transport/uniform/patch_shapes.hpp"
+
+namespace rad {
+
+// Neighbouring emitter patches of one surface [begin, end) in the emitter list, as one source for drawing.
+struct EmitterChunk {
+    std::uint32_t begin = 0, end = 0;
+    PatchShape shape;  // centroid, area, the radius of a ball holding them; the normal if they share one
+    bool facing_one_way = true;
+    double luminance = 0.0;  // area-weighted mean
+};
+
+// The patches that emit (in patch order), their shapes and emitted luminance, and their chunks: one per patch
+// up to kDirectlyDrawnEmitters of them, else about √N neighbouring patches of one surface each.
+struct Emitters {
+    std::vector<std::uint32_t> patches;
+    std::vector<PatchShape> shapes;
+    std::vector<double> luminance;
+    std::vector<EmitterChunk> chunks;
+};
+
+Emitters find_emitters(const PatchMesh& patches, std::span<const glm::dvec3> emitted);
+
+// A chunk's weight at a point with unit normal n: its patch's own (factor_weight times its luminance) where
+// it holds one, else the disk approximation from its ball, lifted as factor_weight lifts it.
+double chunk_weight(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
+                    const EmitterChunk& chunk);
+
+// Every chunk's weight at a point with unit normal n (into `weight`); returns their sum.
+double emitter_weights(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
+                       std::vector<double>& weight);
+
+}  // namespace rad
