@@ -99,7 +99,8 @@ CommandRunner add_bench_command(CLI::App& app) {
         "bench", "Time every solver, form-factor estimator and mesh size against a path-traced reference");
     bench->add_option(
         "scene", options->scene,
-        "The scene (default: builtin:cornell and builtin:white-room, a high-albedo closed room)");
+        "The scene (default: builtin:cornell, builtin:white-room, a high-albedo closed room, and "
+        "builtin:many-lights, 144 small lamps; --quick: the first two)");
     bench->add_flag("--quick", options->quick, "A sweep of seconds, for tests, instead of minutes");
     bench->add_flag(
         "--scaling", options->scaling,

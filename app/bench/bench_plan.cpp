@@ -23,6 +23,7 @@ BenchPlan default_bench_plan(bool quick) {
         plan.clustered_tolerances = {0.1};
         return plan;
     }
+    plan.scenes.push_back("builtin:many-lights");
     plan.size_factors = {2.0, 1.4, 1.0, 0.7};
     plan.estimators = {{FormFactorMethod::hemisphere, 2048},
                        {FormFactorMethod::hemisphere, 1024},

@@ -15,7 +15,8 @@ void add_scene_options(CLI::App& command, SceneOptions& options) {
         .add_option(
             "scene", options.scene,
             "Scene: a .obj (with its .mtl) or .ply file, or builtin:NAME (cornell, white-room, cube, "
-            "parallel, perpendicular, furnace, or furnace-N: a closed room of balls of about N faces, "
+            "parallel, perpendicular, many-lights, furnace, or furnace-N: a closed room of balls of about N "
+            "faces, "
             "e.g. furnace-100k, furnace-1m, where B = 2 everywhere); render and view also take a saved "
             "solution, FILE.radiosity")
         ->capture_default_str();

@@ -142,6 +142,29 @@ TEST(TestScenes, WhiteRoomIsTheCornellBoxClosedAndWhite) {
     EXPECT_GT(room.camera->eye.z, 0.0);
 }
 
+TEST(TestScenes, ManyLightsSpreadsThePublishedLightsPowerOver144LampsFacingDown) {
+    const Scene scene = make_many_lights_box();
+    const Scene cornell = make_cornell_box();
+    glm::dvec3 power(0.0), published(0.0);
+    for (const Surface& s : scene.surfaces) power += s.material.emitted_radiosity() * surface_area(s.mesh);
+    for (const Surface& s : cornell.surfaces)
+        published += s.material.emitted_radiosity() * surface_area(s.mesh);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(power[c], published[c], 1e-9 * published[c]);
+    // At the default patch size every lamp is one patch, facing the floor, under the ceiling.
+    const PatchMesh patches = build_patches(scene, {});
+    std::size_t lamps = 0;
+    for (const Patch& p : patches.patches) {
+        if (!scene.surfaces[p.surface].material.emits()) continue;
+        ++lamps;
+        EXPECT_NEAR(p.normal.y, -1.0, 1e-12);
+        EXPECT_NEAR(p.area, 400.0, 1e-9);
+        EXPECT_LT(p.centroid.y, 548.8);
+    }
+    EXPECT_EQ(lamps, 144u);
+    ASSERT_TRUE(scene.camera.has_value());
+    EXPECT_EQ(scene.camera->eye, cornell.camera->eye);
+}
+
 TEST(TestScenes, SquaresFaceEachOther) {
     for (const Scene& scene : {make_parallel_squares(), make_perpendicular_squares()}) {
         const PatchMesh patches = build_patches(scene, {1.0});

@@ -133,6 +133,10 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
          "a closed unit room of tessellated balls, about 10 k faces (furnace-N for N faces, 1k to 10m: "
          "furnace-100k, furnace-1m), every face with reflectance 0.5 and E = 1: a furnace, B = E / (1 - "
          "reflectance) = 2 on every face"},
+        {"many-lights",
+         "the Cornell box lit by 12 x 12 lamps of 20 mm hanging under its whole ceiling instead of its "
+         "light, "
+         "with the light's power: many small emitter patches"},
     };
     return scenes;
 }
@@ -144,6 +148,7 @@ Scene make_builtin_scene(const std::string& name) {
     if (name == "parallel") return make_parallel_squares();
     if (name == "perpendicular") return make_perpendicular_squares();
     if (name == "furnace") return make_furnace(kFurnaceDefaultFaces);
+    if (name == "many-lights") return make_many_lights_box();
     if (name.starts_with("furnace-")) {
         Scene scene = make_furnace(furnace_faces(name));
         scene.source = "builtin:" + name;  // as it was asked for: furnace-100k, not furnace-100000
@@ -160,6 +165,39 @@ Scene make_cornell_box() {
                                      make_material("green", {0.14, 0.45, 0.091}), cornell_light()};
     Scene scene = make_cornell_geometry("builtin:cornell", materials, false);
     // 35 mm lens on 25 mm film: a vertical field of view of 2 atan(12.5 / 35).
+    scene.camera = Camera{{278, 273, -800}, {278, 273, 0}, {0, 1, 0}, 39.3077};
+    return scene;
+}
+
+Scene make_many_lights_box() {
+    const Material white = make_material("white", {0.725, 0.71, 0.68});
+    const Material published = cornell_light();
+    SoupWriter w("builtin:many-lights");
+    w.begin_surface("floor", white);
+    w.add_polygon({{552.8, 0, 0}, {0, 0, 0}, {0, 0, 559.2}, {549.6, 0, 559.2}});
+    w.begin_surface("ceiling", white);
+    w.add_polygon({{556.0, 548.8, 0}, {556.0, 548.8, 559.2}, {0, 548.8, 559.2}, {0, 548.8, 0}});
+    // The published light's power (130 x 105 mm) spread over the lamps, each facing down 10 mm under the
+    // ceiling.
+    const int lamps = 12;
+    const double side = 20.0, y = 538.8;
+    const double scale = 130.0 * 105.0 / (lamps * lamps * side * side);
+    w.begin_surface("lamps", make_material("lamp", published.reflectance, scale * published.emission));
+    for (int i = 0; i < lamps; ++i) {
+        for (int k = 0; k < lamps; ++k) {
+            const double x = 60.0 + (436.0 - side) * i / (lamps - 1),
+                         z = 60.0 + (440.0 - side) * k / (lamps - 1);
+            w.add_polygon({{x + side, y, z}, {x + side, y, z + side}, {x, y, z + side}, {x, y, z}});
+        }
+    }
+    w.begin_surface("back wall", white);
+    w.add_polygon({{549.6, 0, 559.2}, {0, 0, 559.2}, {0, 548.8, 559.2}, {556.0, 548.8, 559.2}});
+    w.begin_surface("right wall", make_material("green", {0.14, 0.45, 0.091}));
+    w.add_polygon({{0, 0, 559.2}, {0, 0, 0}, {0, 548.8, 0}, {0, 548.8, 559.2}});
+    w.begin_surface("left wall", make_material("red", {0.63, 0.065, 0.05}));
+    w.add_polygon({{552.8, 0, 0}, {549.6, 0, 559.2}, {556.0, 548.8, 559.2}, {556.0, 548.8, 0}});
+    add_cornell_blocks(w, white);
+    Scene scene = w.build();
     scene.camera = Camera{{278, 273, -800}, {278, 273, 0}, {0, 1, 0}, 39.3077};
     return scene;
 }

@@ -24,6 +24,9 @@ Scene make_cornell_box();
 // The Cornell box closed by a front wall, every surface but the light white with ρ = 0.95: high albedo.
 // The light is the published one dimmed tenfold.
 Scene make_white_room();
+// The Cornell box (its materials, blocks and camera; the ceiling whole) lit by 12 x 12 lamps of 20 mm, 10 mm
+// under the ceiling, facing down, with the published light's power between them.
+Scene make_many_lights_box();
 // A closed unit cube seen from inside: the top face emits E = 1 (Le = 1/π), every face has ρ = 0.5.
 Scene make_cube();
 // Two unit squares facing each other at distance 1; the lower one emits E = 1, both have ρ = 0.5.
