@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "viewer/panel_text.hpp"
+
 namespace rad {
 
 namespace {
@@ -96,8 +98,13 @@ PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const 
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         draw_statistics(snapshot.statistics, frames);
     }
-    if (!snapshot.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", snapshot.error.c_str());
-    if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+    if (!snapshot.error.empty()) {
+        // Wrapped, so a long error does not stretch the panel.
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.3f, 1));
+        ImGui::TextWrapped("%s", panel_text(snapshot.error).c_str());
+        ImGui::PopStyleColor();
+    }
+    if (!message_.empty()) ImGui::TextWrapped("%s", panel_text(message_).c_str());
     ImGui::End();
     return requests;
 }
@@ -146,7 +153,8 @@ void ViewerPanel::draw_solver(SolverWorker& worker, const SolverSnapshot& snapsh
                 statistics.prepared        ? std::string(solver_status_name(statistics.status)).c_str()
                 : statistics.saved_options ? "saved"
                                            : "not solved");
-    if (!statistics.status_message.empty()) ImGui::TextWrapped("%s", statistics.status_message.c_str());
+    if (!statistics.status_message.empty())
+        ImGui::TextWrapped("%s", panel_text(statistics.status_message).c_str());
     ImGui::PushID("residual");
     plot("residual", statistics.log_residual);
     ImGui::PopID();

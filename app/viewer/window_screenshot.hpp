@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 #include "rad/io/image.hpp"
@@ -11,7 +12,8 @@ namespace rad {
 // codes, which are decoded. Call after drawing, before swap.
 Image read_window_image(int width, int height);
 
-// radiosity-YYYYMMDD-HHMMSS.png in the working folder, for the screenshot key.
-std::string timestamped_screenshot_path();
+// radiosity-YYYYMMDD-HHMMSS.png in `folder` (the working folder), for the screenshot key; where a file of
+// that name exists (a second screenshot within the second), radiosity-YYYYMMDD-HHMMSS-2.png, -3, ...
+std::string timestamped_screenshot_path(const std::filesystem::path& folder = ".");
 
 }  // namespace rad
