@@ -268,6 +268,7 @@ DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options) cons
     if (!built_.transport && !saved_) return display;
     const PatchMesh& mesh = patches();
     const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, mesh);
+    if (!draws_vertex_direct_light(mesh, emitted)) return display;
     const RayScene rays(mesh);
     VertexDirectLightInput input{
         .patches = &mesh, .rays = &rays, .emitted = emitted, .seed = options_.form_factors.seed};

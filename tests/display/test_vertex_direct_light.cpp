@@ -122,6 +122,7 @@ TEST(VertexDirectLight, TheShadowEdgeIsSharpAtTheVertices) {
 TEST(VertexDirectLight, ShowsOnlyWhatTheRadiosityHoldsOfTheDirectLight) {
     Shown s = show(load_scene(kShadowEdge), 0.1, true);
     ASSERT_FALSE(s.display.direct.vertex.empty());
+    EXPECT_TRUE(draws_vertex_direct_light(*s.solved->system.patches, s.display.direct.emission));
     const Transport& t = *s.solved->system.transport;
     EXPECT_EQ(direct_light_share(s.display, t.emission), 0.0);
     EXPECT_NEAR(direct_light_share(s.display, s.solved->radiosity), 1.0, 1e-9);
@@ -162,6 +163,7 @@ TEST(VertexDirectLight, LeavesSourcesAsLargeAsAFurnaceToThePatches) {
                                       .patch_direct = zeros});
     EXPECT_TRUE(display.direct.vertex.empty());
     EXPECT_EQ(direct_light_share(display, emitted), 0.0);
+    EXPECT_FALSE(draws_vertex_direct_light(patches, emitted));
 }
 
 // 400 lamps of 4 cm in an empty room (assets/hard/many_lights.obj): more emitter patches than are drawn from

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -216,6 +217,13 @@ std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays
 
 }  // namespace
 
+bool draws_vertex_direct_light(const PatchMesh& patches, std::span<const glm::dvec3> emitted) {
+    std::vector<std::uint32_t> emitters;
+    for (std::uint32_t q = 0; q < patches.size() && q < emitted.size(); ++q)
+        if (luminance(emitted[q]) > 0.0) emitters.push_back(q);
+    return sample_emitter_columns(patches, emitters);
+}
+
 std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const RayScene& rays,
                                              std::span<const glm::dvec3> emitted,
                                              std::span<const glm::dvec3> points,
@@ -224,9 +232,9 @@ std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const Ray
         throw std::invalid_argument("direct_irradiance_at: the arrays' sizes do not match");
     }
     std::vector<glm::dvec3> irradiance(points.size(), glm::dvec3(0.0));
-    const Emitters emitters = find_emitters(patches, emitted);
-    if (!sample_emitter_columns(patches, emitters.patches)) return irradiance;
-    const std::vector<PointLight> light = lights_at(patches, rays, emitted, emitters, points, normals, seed);
+    const std::optional<Emitters> emitters = find_emitters(patches, emitted);
+    if (!emitters) return irradiance;
+    const std::vector<PointLight> light = lights_at(patches, rays, emitted, *emitters, points, normals, seed);
     for (std::size_t k = 0; k < points.size(); ++k) irradiance[k] = light[k].irradiance;
     return irradiance;
 }
@@ -239,15 +247,15 @@ void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput&
         throw std::invalid_argument("add_vertex_direct_light: the arrays do not have one entry per patch");
     }
     display.direct = {};
-    const Emitters emitters = find_emitters(patches, input.emitted);
-    if (!sample_emitter_columns(patches, emitters.patches)) return;
+    const std::optional<Emitters> emitters = find_emitters(patches, input.emitted);
+    if (!emitters) return;
     std::vector<glm::dvec3> origins(display.vertex_count()), normals(display.vertex_count());
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         origins[v] = vertex_origin(display, patches, v);
         normals[v] = glm::normalize(glm::dvec3(display.normals[v]));
     }
     const std::vector<PointLight> light =
-        lights_at(patches, *input.rays, input.emitted, emitters, origins, normals, input.seed);
+        lights_at(patches, *input.rays, input.emitted, *emitters, origins, normals, input.seed);
     std::vector<glm::dvec3> exact(display.vertex_count(), glm::dvec3(0.0));
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "transport/uniform/form_factors_emitter_columns.hpp"
 #include "util/luminance.hpp"
 
 namespace rad {
@@ -54,16 +55,17 @@ void make_chunks(Emitters& e, const PatchMesh& patches) {
 
 }  // namespace
 
-Emitters find_emitters(const PatchMesh& patches, std::span<const glm::dvec3> emitted) {
+std::optional<Emitters> find_emitters(const PatchMesh& patches, std::span<const glm::dvec3> emitted) {
     Emitters out;
-    const std::vector<PatchShape> all = patch_shapes(patches);
     for (std::uint32_t q = 0; q < patches.size(); ++q) {
         const double l = luminance(emitted[q]);
         if (!(l > 0.0)) continue;
         out.patches.push_back(q);
-        out.shapes.push_back(all[q]);
         out.luminance.push_back(l);
     }
+    if (!sample_emitter_columns(patches, out.patches)) return std::nullopt;
+    out.shapes.reserve(out.patches.size());
+    for (std::uint32_t q : out.patches) out.shapes.push_back(patch_shape(patches, q));
     make_chunks(out, patches);
     return out;
 }

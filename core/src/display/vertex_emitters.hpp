@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -29,7 +30,10 @@ struct Emitters {
     std::vector<EmitterChunk> chunks;
 };
 
-Emitters find_emitters(const PatchMesh& patches, std::span<const glm::dvec3> emitted);
+// The patches with emission `emitted` (E per patch) as sources to draw; nothing where none emits or where
+// they are so many, or cover so much of the scene, that the transport leaves their light to hemisphere
+// rays (sample_emitter_columns): light from sources that large is smooth.
+std::optional<Emitters> find_emitters(const PatchMesh& patches, std::span<const glm::dvec3> emitted);
 
 // A chunk's weight at a point with unit normal n: its patch's own (factor_weight times its luminance) where
 // it holds one, else the disk approximation from its ball, lifted as factor_weight lifts it.

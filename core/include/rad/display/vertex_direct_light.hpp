@@ -43,6 +43,10 @@ struct VertexDirectLightInput {
 // large is smooth. Throws std::invalid_argument when the arrays do not have one entry per patch.
 void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input);
 
+// Whether add_vertex_direct_light would trace anything for patches emitting `emitted` (E per patch), so a
+// caller can skip building the rays for a scene it leaves to the patches (a furnace).
+bool draws_vertex_direct_light(const PatchMesh& patches, std::span<const glm::dvec3> emitted);
+
 // H_d, the emitters' direct irradiance, at points with unit normals as add_vertex_direct_light estimates it
 // at each vertex (before the patches' means are kept; the points are where rays leave, off their surface by
 // the ray offset); 0 everywhere where it leaves the light to the patches. `emitted` is E per patch. Throws

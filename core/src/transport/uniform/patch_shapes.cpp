@@ -6,19 +6,22 @@
 
 namespace rad {
 
+PatchShape patch_shape(const PatchMesh& patches, std::size_t i) {
+    const glm::uvec4& c = patches.corners[i];
+    PatchShape s;
+    s.polygon.count = static_cast<std::size_t>(patches.corner_count(i));
+    for (std::size_t k = 0; k < s.polygon.count; ++k) s.polygon.corners[k] = patches.points[c[k]];
+    s.centroid = patches.patches[i].centroid;
+    s.normal = patches.patches[i].normal;
+    s.area = patches.patches[i].area;
+    for (std::size_t k = 0; k < s.polygon.count; ++k)
+        s.radius = std::max(s.radius, glm::length(s.polygon.corners[k] - s.centroid));
+    return s;
+}
+
 std::vector<PatchShape> patch_shapes(const PatchMesh& patches) {
     std::vector<PatchShape> shapes(patches.size());
-    for (std::size_t i = 0; i < patches.size(); ++i) {
-        const glm::uvec4& c = patches.corners[i];
-        PatchShape& s = shapes[i];
-        s.polygon.count = static_cast<std::size_t>(patches.corner_count(i));
-        for (std::size_t k = 0; k < s.polygon.count; ++k) s.polygon.corners[k] = patches.points[c[k]];
-        s.centroid = patches.patches[i].centroid;
-        s.normal = patches.patches[i].normal;
-        s.area = patches.patches[i].area;
-        for (std::size_t k = 0; k < s.polygon.count; ++k)
-            s.radius = std::max(s.radius, glm::length(s.polygon.corners[k] - s.centroid));
-    }
+    for (std::size_t i = 0; i < patches.size(); ++i) shapes[i] = patch_shape(patches, i);
     return shapes;
 }
 

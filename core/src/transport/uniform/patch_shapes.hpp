@@ -20,6 +20,7 @@ struct PatchShape {
     double radius = 0.0;  // of the ball around the centroid that holds the patch
 };
 
+PatchShape patch_shape(const PatchMesh& patches, std::size_t patch);
 std::vector<PatchShape> patch_shapes(const PatchMesh& patches);
 
 // A weight roughly proportional to the factor from a receiver (a patch, or a point: radius 0) to `source`,
