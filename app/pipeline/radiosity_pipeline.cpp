@@ -264,11 +264,15 @@ std::vector<glm::dvec3> RadiosityPipeline::element_direct() const {
 
 DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options) const {
     DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
-    if (options.mode != ColourMode::smooth || !options.direct_light_at_vertices) return display;
-    if (!built_.transport && !saved_) return display;
+    if (options.mode == ColourMode::smooth && options.direct_light_at_vertices) add_direct_light(display);
+    return display;
+}
+
+void RadiosityPipeline::add_direct_light(DisplayMesh& display) const {
+    if (!built_.transport && !saved_) return;
     const PatchMesh& mesh = patches();
     const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, mesh);
-    if (!draws_vertex_direct_light(mesh, emitted)) return display;
+    if (!draws_vertex_direct_light(mesh, emitted)) return;
     const RayScene rays(mesh);
     VertexDirectLightInput input{
         .patches = &mesh, .rays = &rays, .emitted = emitted, .seed = options_.form_factors.seed};
@@ -287,7 +291,6 @@ DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options) cons
         input.patch_direct = saved_->direct;
     }
     add_vertex_direct_light(display, input);
-    return display;
 }
 
 DisplayTexturing RadiosityPipeline::display_texturing() const {

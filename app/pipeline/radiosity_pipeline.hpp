@@ -88,6 +88,9 @@ class RadiosityPipeline {
     // A display mesh of patches() with these options; in smooth mode, once there is a transport or a saved
     // solution, with the emitters' direct light at its vertices (DisplayOptions::direct_light_at_vertices).
     DisplayMesh build_display(const DisplayOptions& options) const;
+    // Adds the emitters' direct light to the vertices of a display mesh of patches() (smooth mode), once
+    // there is a transport or a saved solution; else leaves it as it is.
+    void add_direct_light(DisplayMesh& display) const;
     // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the
     // transport's after prepare, the saved one, or else the patches' mean albedo, which uniform transport
     // will use).

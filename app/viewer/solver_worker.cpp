@@ -247,9 +247,10 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
         // The transport's elements are new patches (adaptive or hierarchical leaves): new geometry to draw.
         display_ = pipeline_->build_display(options_.display);
         publish(true, false);
-    } else if (!saved) {
+    } else if (!saved && options_.display.mode == ColourMode::smooth &&
+               options_.display.direct_light_at_vertices) {
         // The same geometry, now with the emitters' direct light at its vertices.
-        display_ = pipeline_->build_display(options_.display);
+        pipeline_->add_direct_light(display_);
     }
     if (!saved) {
         reset_solver(Reset{options_.solver.method, options_.solver.tolerance, false});

@@ -78,9 +78,8 @@ TEST(DisplaySeams, ACornerInsideAnotherSurfacesEdgeBecomesAVertexOfItsTriangles)
     }
 }
 
-TEST(DisplaySeams, TheCornellBoxHasNoTJunctions) {
-    // Its blocks stand on the floor inside its patches and its walls meet at shared corners: nothing to
-    // close, and nothing added.
+TEST(DisplaySeams, SurfacesMeetingAtMatchingCornersGetNothingAdded) {
+    // The cube's faces meet at corners on the same grid: nothing to close, and no triangle added.
     const PatchMesh patches = build_patches(make_builtin_scene("cube"), MeshingOptions{.patch_size = 0.25});
     const DisplayMesh d = build_display_mesh(patches);
     EXPECT_FALSE(has_t_junction(d));

@@ -15,10 +15,8 @@
 #include "display/vertex_emitters.hpp"
 #include "sampling/power_draws.hpp"
 #include "sampling/sampling.hpp"
-#include "transport/uniform/form_factors_emitter_columns.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 #include "transport/uniform/patch_shapes.hpp"
-#include "util/luminance.hpp"
 
 namespace rad {
 
@@ -218,10 +216,10 @@ std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays
 }  // namespace
 
 bool draws_vertex_direct_light(const PatchMesh& patches, std::span<const glm::dvec3> emitted) {
-    std::vector<std::uint32_t> emitters;
-    for (std::uint32_t q = 0; q < patches.size() && q < emitted.size(); ++q)
-        if (luminance(emitted[q]) > 0.0) emitters.push_back(q);
-    return sample_emitter_columns(patches, emitters);
+    if (emitted.size() != patches.size())
+        throw std::invalid_argument(
+            "draws_vertex_direct_light: the emission does not have one entry per patch");
+    return find_emitters(patches, emitted).has_value();
 }
 
 std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const RayScene& rays,

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <numbers>
 
 #include "transport/uniform/form_factors_emitter_columns.hpp"
 #include "util/luminance.hpp"
@@ -20,6 +19,11 @@ EmitterChunk make_chunk(const Emitters& e, std::uint32_t begin, std::uint32_t en
     EmitterChunk c;
     c.begin = begin;
     c.end = end;
+    if (end - begin == 1) {
+        c.shape = e.shapes[begin];
+        c.luminance = e.luminance[begin];
+        return c;
+    }
     glm::dvec3 normal(0.0);
     for (std::uint32_t k = begin; k < end; ++k) {
         c.shape.area += e.shapes[k].area;
@@ -33,9 +37,8 @@ EmitterChunk make_chunk(const Emitters& e, std::uint32_t begin, std::uint32_t en
         c.shape.radius = std::max(c.shape.radius,
                                   glm::length(e.shapes[k].centroid - c.shape.centroid) + e.shapes[k].radius);
     }
-    // Patches facing many ways (a lamp's globe) send light every way: no cosine at the source.
-    c.facing_one_way = glm::length(normal) >= 0.9 * c.shape.area;
-    c.shape.normal = c.facing_one_way ? glm::normalize(normal) : glm::dvec3(0.0);
+    // Patches facing many ways (a lamp's globe) send light every way: no normal, so no cosine at the source.
+    if (glm::length(normal) >= 0.9 * c.shape.area) c.shape.normal = glm::normalize(normal);
     return c;
 }
 
@@ -51,6 +54,10 @@ void make_chunks(Emitters& e, const PatchMesh& patches) {
         e.chunks.push_back(make_chunk(e, begin, end));
         begin = end;
     }
+}
+
+double chunk_weight(const glm::dvec3& origin, const glm::dvec3& n, const EmitterChunk& c) {
+    return c.luminance * factor_weight(origin, n, 0.0, c.shape);
 }
 
 }  // namespace
@@ -70,27 +77,12 @@ std::optional<Emitters> find_emitters(const PatchMesh& patches, std::span<const 
     return out;
 }
 
-double chunk_weight(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
-                    const EmitterChunk& c) {
-    if (c.end - c.begin == 1)
-        return emitters.luminance[c.begin] * factor_weight(origin, n, 0.0, emitters.shapes[c.begin]);
-    const glm::dvec3 d = c.shape.centroid - origin;
-    const double distance = glm::length(d);
-    const double gap = std::max(0.0, distance - c.shape.radius);
-    const double lift = gap > 0.0 ? c.shape.radius / gap : 1.0;
-    const glm::dvec3 towards = distance > 0.0 ? d / distance : n;
-    const double ci = std::clamp(glm::dot(n, towards) + lift, 0.0, 1.0);
-    const double cj =
-        c.facing_one_way ? std::clamp(-glm::dot(c.shape.normal, towards) + lift, 0.0, 1.0) : 1.0;
-    return c.luminance * c.shape.area * ci * cj / (std::numbers::pi * gap * gap + c.shape.area);
-}
-
 double emitter_weights(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
                        std::vector<double>& weight) {
     weight.assign(emitters.chunks.size(), 0.0);
     double total = 0.0;
     for (std::size_t k = 0; k < emitters.chunks.size(); ++k) {
-        weight[k] = chunk_weight(origin, n, emitters, emitters.chunks[k]);
+        weight[k] = chunk_weight(origin, n, emitters.chunks[k]);
         total += weight[k];
     }
     return total;

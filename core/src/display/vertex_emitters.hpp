@@ -16,8 +16,8 @@ namespace rad {
 // Neighbouring emitter patches of one surface [begin, end) in the emitter list, as one source for drawing.
 struct EmitterChunk {
     std::uint32_t begin = 0, end = 0;
-    PatchShape shape;  // centroid, area, the radius of a ball holding them; the normal if they share one
-    bool facing_one_way = true;
+    PatchShape
+        shape;  // centroid, area, the radius of a ball holding them; the normal if they share one, else 0
     double luminance = 0.0;  // area-weighted mean
 };
 
@@ -35,12 +35,8 @@ struct Emitters {
 // rays (sample_emitter_columns): light from sources that large is smooth.
 std::optional<Emitters> find_emitters(const PatchMesh& patches, std::span<const glm::dvec3> emitted);
 
-// A chunk's weight at a point with unit normal n: its patch's own (factor_weight times its luminance) where
-// it holds one, else the disk approximation from its ball, lifted as factor_weight lifts it.
-double chunk_weight(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
-                    const EmitterChunk& chunk);
-
-// Every chunk's weight at a point with unit normal n (into `weight`); returns their sum.
+// Every chunk's weight at a point with unit normal n (its luminance times factor_weight of its shape) (into
+// `weight`); returns their sum.
 double emitter_weights(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
                        std::vector<double>& weight);
 

@@ -44,7 +44,8 @@ struct VertexDirectLightInput {
 void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input);
 
 // Whether add_vertex_direct_light would trace anything for patches emitting `emitted` (E per patch), so a
-// caller can skip building the rays for a scene it leaves to the patches (a furnace).
+// caller can skip building the rays for a scene it leaves to the patches (a furnace). Throws
+// std::invalid_argument when `emitted` does not have one entry per patch.
 bool draws_vertex_direct_light(const PatchMesh& patches, std::span<const glm::dvec3> emitted);
 
 // H_d, the emitters' direct irradiance, at points with unit normals as add_vertex_direct_light estimates it

@@ -34,7 +34,8 @@ double factor_weight(const glm::dvec3& centre, const glm::dvec3& normal, double 
     const double gap = std::max(0.0, distance - radius - source.radius);
     const double lift = gap > 0.0 ? (radius + source.radius) / gap : 1.0;
     const double ci = std::clamp(glm::dot(normal, towards) + lift, 0.0, 1.0);
-    const double cj = std::clamp(-glm::dot(source.normal, towards) + lift, 0.0, 1.0);
+    const bool facing = source.normal != glm::dvec3(0.0);
+    const double cj = facing ? std::clamp(-glm::dot(source.normal, towards) + lift, 0.0, 1.0) : 1.0;
     return source.area * ci * cj / (std::numbers::pi * gap * gap + source.area);
 }
 

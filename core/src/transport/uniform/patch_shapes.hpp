@@ -25,8 +25,9 @@ std::vector<PatchShape> patch_shapes(const PatchMesh& patches);
 
 // A weight roughly proportional to the factor from a receiver (a patch, or a point: radius 0) to `source`,
 // and positive wherever the exact one can be: the disk approximation A_j c_i c_j / (π g² + A_j) with each
-// cosine lifted by the two's extent over their gap g, so a neighbour at a grazing angle is never dismissed.
-// How light sources are weighted when they are drawn by power.
+// cosine lifted by the two's extent over their gap g, so a neighbour at a grazing angle is never dismissed;
+// a source with no normal (0: parts facing every way) has no cosine. How light sources are weighted when
+// they are drawn by power.
 double factor_weight(const glm::dvec3& centre, const glm::dvec3& normal, double radius,
                      const PatchShape& source);
 
