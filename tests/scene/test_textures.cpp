@@ -81,6 +81,28 @@ TEST(Texture, ALargeImageIsReducedForTheDisplayKeepingItsMean) {
     EXPECT_NEAR(texture->linear_at({0.5, 0.5}).g, 1.0 / 3.0, 0.005);
 }
 
+// A PNG of 2 × 2 texels whose second chunk claims 2 GB (found by fuzz_gltf: stb_image allocated what the
+// length claimed), and bytes of no image format: refused with a reason, nothing allocated for them.
+TEST(Texture, AChunkLongerThanTheFileAndOtherFormatsAreRefused) {
+    const std::string good =
+        test::read_file_text(std::string(RAD_SOURCE_DIR) + "/assets/hard/half_white.png");
+    std::string forged = good;
+    // The chunk after IHDR (8 bytes of signature, 25 of IHDR) starts at byte 33: its length, big-endian.
+    forged[33] = '\x7a';
+    forged[34] = forged[35] = forged[36] = '\x00';
+    std::string why;
+    EXPECT_FALSE(
+        decode_texture(reinterpret_cast<const unsigned char*>(forged.data()), forged.size(), "t", why));
+    EXPECT_NE(why.find("a PNG chunk at byte 33 claims 2046820352 bytes, more than the file holds"),
+              std::string::npos)
+        << why;
+    const std::string bmp = "BM" + std::string(60, '\0');
+    EXPECT_FALSE(decode_texture(reinterpret_cast<const unsigned char*>(bmp.data()), bmp.size(), "t", why));
+    EXPECT_EQ(why, "it is not a PNG or JPEG image");
+    EXPECT_TRUE(decode_texture(reinterpret_cast<const unsigned char*>(good.data()), good.size(), "t", why))
+        << why;
+}
+
 TEST(FaceTexcoords, MeanValueCoordinatesReproduceAnAffineMapOnAnyConvexFace) {
     SurfaceMesh mesh;
     mesh.request_halfedge_texcoords2D();

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "rad/util/srgb.hpp"
 #include "scene/scene_limits.hpp"
@@ -46,12 +48,39 @@ void reduce(const unsigned char* texels, int width, int height, int factor, Text
     }
 }
 
+// Why the bytes are not an image worth handing to stb_image, or empty. Only PNG and JPEG are read (what the
+// scene formats use). stb_image sizes a PNG's compressed data by the lengths its chunks claim, before it
+// reads them, so a corrupt length of 2 GB in a file of a few bytes would be allocated: the chunks are walked
+// here first, each within the file.
+std::string image_problem(const unsigned char* bytes, std::size_t size) {
+    static constexpr unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    const bool jpeg = size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
+    if (jpeg) return {};
+    if (size < sizeof kPng || !std::equal(kPng, kPng + sizeof kPng, bytes))
+        return "it is not a PNG or JPEG image";
+    for (std::size_t at = sizeof kPng; at + 12 <= size;) {
+        const std::size_t length = (std::size_t{bytes[at]} << 24) | (std::size_t{bytes[at + 1]} << 16) |
+                                   (std::size_t{bytes[at + 2]} << 8) | std::size_t{bytes[at + 3]};
+        if (length > size - at - 12) {
+            return "a PNG chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) +
+                   " bytes, more than the file holds";
+        }
+        if (std::equal(bytes + at + 4, bytes + at + 8, "IEND")) break;
+        at += 12 + length;
+    }
+    return {};
+}
+
 }  // namespace
 
 std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, std::size_t size,
                                               const std::string& name, std::string& why) {
     if (size == 0 || size > INT_MAX) {
         why = "the image is empty or too large to decode";
+        return nullptr;
+    }
+    if (std::string problem = image_problem(bytes, size); !problem.empty()) {
+        why = std::move(problem);
         return nullptr;
     }
     int width = 0, height = 0, channels = 0;
