@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli/camera_option.hpp"
 #include "cli/comma_numbers.hpp"
 #include "cli/commands.hpp"
 #include "cli/export_option.hpp"
@@ -53,28 +54,6 @@ constexpr int kMaxImageSide = 16384;
 // A cameras file is a short list typed by people; more than this is not one (and would be that many images).
 constexpr std::size_t kMaxCameras = 10000;
 constexpr std::uintmax_t kMaxCamerasFileBytes = 1 << 20;
-
-glm::dvec3 vec(const std::vector<double>& v, std::size_t at) {
-    return {v[at], v[at + 1], v[at + 2]};
-}
-
-// `where` names the text in errors: "--camera", or "FILE:LINE".
-Camera parse_camera(const std::string& text, const Camera& fallback, const std::string& where) {
-    const std::vector<double> values = comma_numbers(text, where, "ex,ey,ez,tx,ty,tz[,ux,uy,uz]");
-    if (values.size() != 6 && values.size() != 9) {
-        throw InputError(where + ": " + std::to_string(values.size()) +
-                         " numbers; want 6 (eye, target) or 9 (eye, target, up)");
-    }
-    Camera camera = fallback;
-    camera.eye = vec(values, 0);
-    camera.target = vec(values, 3);
-    if (values.size() == 9) camera.up = vec(values, 6);
-    if (glm::length(camera.target - camera.eye) == 0.0) throw InputError(where + ": eye and target coincide");
-    if (glm::length(glm::cross(camera.target - camera.eye, camera.up)) == 0.0) {
-        throw InputError(where + ": the up vector is zero or points along the view direction");
-    }
-    return camera;
-}
 
 // One camera per line; blank lines and # comments are skipped. Errors name the file and line.
 std::vector<Camera> read_cameras_file(const std::string& path, const Camera& fallback) {

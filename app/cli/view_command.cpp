@@ -33,6 +33,11 @@ void add_viewer_options(CLI::App& command, ViewerOptions& options) {
     command.add_option("--screenshot", options.screenshot,
                        "Script: after --steps, save the window as this PNG");
     command.add_flag("--exit", options.exit, "Script: close the window after --steps (and --screenshot)");
+    command
+        .add_option("--idle", options.idle_seconds,
+                    "Script: after --steps, stay open SECONDS untouched and print the frames drawn and the "
+                    "CPU time used meanwhile")
+        ->check(CLI::Range(0.0, 3600.0));
 }
 
 int run_view(ViewerOptions options, const CLI::App& command) {
@@ -41,6 +46,7 @@ int run_view(ViewerOptions options, const CLI::App& command) {
     }
     if (options.exit && options.steps < 0) options.steps = 0;  // --exit alone: show the emission, then close
     if (!options.screenshot.empty() && options.steps < 0) options.steps = 0;
+    if (options.idle_seconds > 0.0 && options.steps < 0) options.steps = 0;
     Viewer viewer(options);
     return viewer.run();
 }

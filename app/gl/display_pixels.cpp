@@ -15,21 +15,21 @@ float srgb_decode(float encoded) {
 
 }  // namespace
 
-std::vector<glm::vec3> read_display_pixels(int width, int height) {
+std::vector<glm::vec3> read_display_pixels(int width, int height, int x, int y) {
     std::vector<std::uint8_t> bytes(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bytes.data());
+    glReadPixels(x, y, width, height, GL_RGB, GL_UNSIGNED_BYTE, bytes.data());
 
     float value_of_byte[256];
     for (int b = 0; b < 256; ++b) value_of_byte[b] = srgb_decode(static_cast<float>(b) / 255.0f);
     std::vector<glm::vec3> pixels(bytes.size() / 3);
-    for (int y = 0; y < height; ++y) {
-        const std::size_t source_row = static_cast<std::size_t>(height - 1 - y) *
+    for (int row = 0; row < height; ++row) {
+        const std::size_t source_row = static_cast<std::size_t>(height - 1 - row) *
                                        static_cast<std::size_t>(width);  // OpenGL: bottom first
-        for (int x = 0; x < width; ++x) {
-            const std::uint8_t* rgb = &bytes[(source_row + static_cast<std::size_t>(x)) * 3];
-            pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                   static_cast<std::size_t>(x)] =
+        for (int column = 0; column < width; ++column) {
+            const std::uint8_t* rgb = &bytes[(source_row + static_cast<std::size_t>(column)) * 3];
+            pixels[static_cast<std::size_t>(row) * static_cast<std::size_t>(width) +
+                   static_cast<std::size_t>(column)] =
                 glm::vec3(value_of_byte[rgb[0]], value_of_byte[rgb[1]], value_of_byte[rgb[2]]);
         }
     }

@@ -293,6 +293,30 @@ void RadiosityPipeline::add_direct_light(DisplayMesh& display) const {
     add_vertex_direct_light(display, input);
 }
 
+std::vector<glm::dvec3> RadiosityPipeline::preview_radiosity() const {
+    return emitted_radiosity(loaded_.scene, patches());
+}
+
+void RadiosityPipeline::add_preview_direct_light(DisplayMesh& display) const {
+    const PatchMesh& mesh = patches();
+    const std::vector<glm::dvec3> emitted = preview_radiosity();
+    if (!draws_vertex_direct_light(mesh, emitted)) return;
+    const RayScene rays(mesh);
+    const DisplayTexturing texturing = display_texturing();
+    std::vector<double> area(mesh.size());
+    for (std::size_t q = 0; q < mesh.size(); ++q) area[q] = mesh.patches[q].area;
+    const std::vector<glm::dvec3> unknown(mesh.size(), glm::dvec3(0.0));
+    add_vertex_direct_light(display, {.patches = &mesh,
+                                      .rays = &rays,
+                                      .emitted = emitted,
+                                      .emission = emitted,
+                                      .reflectance = texturing.reflectance,
+                                      .area = area,
+                                      .patch_direct = unknown,
+                                      .seed = options_.form_factors.seed,
+                                      .keep_patch_means = false});
+}
+
 DisplayTexturing RadiosityPipeline::display_texturing() const {
     if (built_.transport) return {&loaded_.scene, built_.transport->reflectance};
     if (saved_) return {&loaded_.scene, saved_->reflectance};

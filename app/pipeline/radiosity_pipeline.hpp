@@ -91,6 +91,12 @@ class RadiosityPipeline {
     // Adds the emitters' direct light to the vertices of a display mesh of patches() (smooth mode), once
     // there is a transport or a saved solution; else leaves it as it is.
     void add_direct_light(DisplayMesh& display) const;
+    // Before prepare, while the transport is built: the emitters' direct light at the vertices of a display
+    // mesh of patches() as it is known without form factors (no patch holds any of it yet), so a viewer can
+    // show the scene lit, with direct_share 1 over preview_radiosity().
+    void add_preview_direct_light(DisplayMesh& display) const;
+    // E per patch of patches(): the radiosity before any light is reflected.
+    std::vector<glm::dvec3> preview_radiosity() const;
     // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the
     // transport's after prepare, the saved one, or else the patches' mean albedo, which uniform transport
     // will use).

@@ -6,20 +6,27 @@
 
 #include "cli/number_checks.hpp"
 #include "pipeline/outside_light_options.hpp"
+#include "rad/scene/builtin_scenes.hpp"
 #include "rad/scene/scene_loader.hpp"
 
 namespace rad {
 
+namespace {
+
+// The built-in scenes' names from their list, so the help never leaves one out.
+std::string scene_help() {
+    std::string names;
+    for (const BuiltinSceneInfo& scene : builtin_scenes()) names += scene.name + ", ";
+    return "Scene: a .obj (with its .mtl), .ply, .gltf or .glb file, or builtin:NAME (" + names +
+           "or furnace-N: a closed room of balls of about N faces, e.g. furnace-100k, furnace-1m, where B = "
+           "2 "
+           "everywhere); render and view also take a saved solution, FILE.radiosity";
+}
+
+}  // namespace
+
 void add_scene_options(CLI::App& command, SceneOptions& options) {
-    command
-        .add_option(
-            "scene", options.scene,
-            "Scene: a .obj (with its .mtl) or .ply file, or builtin:NAME (cornell, white-room, cube, "
-            "parallel, perpendicular, many-lights, furnace, or furnace-N: a closed room of balls of about N "
-            "faces, "
-            "e.g. furnace-100k, furnace-1m, where B = 2 everywhere); render and view also take a saved "
-            "solution, FILE.radiosity")
-        ->capture_default_str();
+    command.add_option("scene", options.scene, scene_help())->capture_default_str();
     command
         .add_option("--patch-size", options.patch_size,
                     "Largest patch edge, in scene units (default: a sixteenth of the scene's largest extent)")

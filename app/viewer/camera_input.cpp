@@ -46,4 +46,9 @@ void CameraInput::release() {
     dragging_ = false;
 }
 
+bool CameraInput::moving(GLFWwindow* window) const {
+    const MoveInput keys = held_move_keys(window);
+    return dragging_ || keys.forward != 0 || keys.right != 0 || keys.up != 0;
+}
+
 }  // namespace rad

@@ -18,6 +18,8 @@ class CameraInput {
                 bool keyboard, bool mouse);
     // Forgets the drag in progress, so the view does not jump when focus comes back.
     void release();
+    // A move key is held or the view is being dragged: the camera changes every frame, without events.
+    bool moving(GLFWwindow* window) const;
 
     bool orbit = false;
 

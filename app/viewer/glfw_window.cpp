@@ -52,6 +52,16 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
     glfwSetScrollCallback(window_, on_scroll);
     glfwSetKeyCallback(window_, on_key);
     glfwSetDropCallback(window_, on_drop);
+    // Dear ImGui's backend, installed after these, calls them from its own callbacks.
+    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned) { count_event(w); });
+    glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double, double) { count_event(w); });
+    glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { count_event(w); });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int, int) { count_event(w); });
+    glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { count_event(w); });
+    glfwSetWindowSizeCallback(window_, [](GLFWwindow* w, int, int) { count_event(w); });
+    glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { count_event(w); });
+    glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { count_event(w); });
+    glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { count_event(w); });
 }
 
 GlfwWindow::~GlfwWindow() {
@@ -75,15 +85,22 @@ WindowEvents GlfwWindow::take_events() {
     return std::exchange(events_, WindowEvents{});
 }
 
+void GlfwWindow::count_event(GLFWwindow* window) {
+    ++owner(window).event_count_;
+}
+
 void GlfwWindow::on_scroll(GLFWwindow* window, double, double dy) {
+    count_event(window);
     owner(window).events_.scroll += dy;
 }
 
 void GlfwWindow::on_key(GLFWwindow* window, int key, int, int action, int) {
+    count_event(window);
     if (action == GLFW_PRESS) owner(window).events_.pressed_keys.push_back(key);
 }
 
 void GlfwWindow::on_drop(GLFWwindow* window, int count, const char** paths) {
+    count_event(window);
     for (int i = 0; i < count; ++i) owner(window).events_.dropped.emplace_back(paths[i]);
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstdint>
+
 #include <string>
 #include <vector>
 
@@ -30,14 +32,19 @@ class GlfwWindow {
     void request_close();
     void swap_buffers();
     WindowEvents take_events();
+    // Counts every input and window event GLFW has delivered (keys, characters, the mouse, focus, size,
+    // exposure), so the viewer can tell a wake-up with something to draw from a timeout.
+    std::uint64_t event_count() const { return event_count_; }
 
   private:
     static void on_scroll(GLFWwindow* window, double dx, double dy);
     static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
     static void on_drop(GLFWwindow* window, int count, const char** paths);
+    static void count_event(GLFWwindow* window);
 
     GLFWwindow* window_ = nullptr;
     WindowEvents events_;
+    std::uint64_t event_count_ = 0;
 };
 
 }  // namespace rad

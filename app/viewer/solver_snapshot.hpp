@@ -54,8 +54,9 @@ struct ViewerStatistics {
     // While a saved solution is open, the options it was solved with, their scene the one it was solved
     // from: what "Re-mesh and recompute" starts from. Empty for a scene.
     std::optional<PipelineOptions> saved_options;
-    std::string remesh_unavailable;  // why those cannot be recomputed (the scene file is gone), or empty
-    std::uint64_t opened = 0;        // scenes and saved solutions opened so far
+    std::string remesh_unavailable;     // why those cannot be recomputed (the scene file is gone), or empty
+    std::uint64_t opened = 0;           // scenes and saved solutions opened so far
+    std::vector<std::string> warnings;  // the loader's about the scene shown (clamped values, skipped faces)
     std::size_t patches = 0;
     std::size_t interactions = 0;  // the transport's form factors, or links
     std::string interaction_name;  // "form factors", "links"

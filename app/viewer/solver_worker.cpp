@@ -52,7 +52,8 @@ std::string missing_scene(const std::string& source) {
 
 }  // namespace
 
-SolverWorker::SolverWorker(const PipelineOptions& options) : arena_(work_threads()) {
+SolverWorker::SolverWorker(const PipelineOptions& options, std::function<void()> on_change)
+    : on_change_(std::move(on_change)), arena_(work_threads()) {
     pending_rebuild_ = options;
     thread_ = std::thread([this] { loop(); });
 }
@@ -71,8 +72,9 @@ void SolverWorker::request_rebuild(const PipelineOptions& options) {
     {
         std::lock_guard lock(mutex_);
         if (progress_) progress_->cancel();  // the old scene's form factors are no longer wanted
+        // Started again should the new scene not open.
+        if (current_rebuild_ && !interrupted_rebuild_) interrupted_rebuild_ = current_rebuild_;
         pending_rebuild_ = options;
-        running_ = false;
     }
     wake_.notify_all();
 }
@@ -164,6 +166,7 @@ void SolverWorker::loop() {
             if (pending_rebuild_) {
                 rebuild_options = std::move(pending_rebuild_);
                 pending_rebuild_.reset();
+                current_rebuild_ = rebuild_options;
             } else if (pending_colour_mode_) {
                 colour_mode = pending_colour_mode_;
                 pending_colour_mode_.reset();
@@ -175,6 +178,7 @@ void SolverWorker::loop() {
             }
             progress_ = std::make_shared<Progress>();
         }
+        bool finished = false;
         try {
             arena_.execute([&] {
                 if (rebuild_options) {
@@ -187,6 +191,7 @@ void SolverWorker::loop() {
                     take_step();
                 }
             });
+            finished = true;
         } catch (const Cancelled&) {
             fail("cancelled; re-mesh or reset to compute again");
         } catch (const InputError& e) {
@@ -195,9 +200,21 @@ void SolverWorker::loop() {
             fail(std::string("failed: ") + e.what());
         }
         publish_statistics();
-        std::lock_guard lock(mutex_);
-        progress_.reset();
+        {
+            std::lock_guard lock(mutex_);
+            progress_.reset();
+            // A rebuild that ran to its end need not run again.
+            if (current_rebuild_ && finished) interrupted_rebuild_.reset();
+            if (current_rebuild_ && keep_error_jobs_ > 0) --keep_error_jobs_;
+            current_rebuild_.reset();
+        }
+        changed();
     }
+}
+
+void SolverWorker::changed() {
+    ++changes_;
+    if (on_change_) on_change_();
 }
 
 void SolverWorker::rebuild(const PipelineOptions& options) {
@@ -207,19 +224,73 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     std::unique_ptr<RadiosityPipeline> pipeline;
     std::optional<PipelineOptions> saved_options;
     std::size_t saved_steps = 0;
-    if (saved) {
-        SavedSolution solution = read_saved_solution(options.scene.scene);
-        saved_options = options_from_saved(solution.settings, options);
-        saved_steps = solution.report.steps;
-        pipeline =
-            std::make_unique<RadiosityPipeline>(std::move(solution), options.scene.scene, options.display);
-    } else {
-        pipeline = std::make_unique<RadiosityPipeline>(options);
+    try {
+        if (saved) {
+            SavedSolution solution = read_saved_solution(options.scene.scene);
+            saved_options = options_from_saved(solution.settings, options);
+            saved_steps = solution.report.steps;
+            pipeline = std::make_unique<RadiosityPipeline>(std::move(solution), options.scene.scene,
+                                                           options.display);
+        } else {
+            pipeline = std::make_unique<RadiosityPipeline>(options);
+        }
+    } catch (const InputError& e) {
+        // Nothing changed, so the previous scene stays shown, its steps go on, and the work this request
+        // cut short starts again.
+        std::lock_guard lock(mutex_);
+        snapshot_.error = input_error_message(e);
+        snapshot_.bad_input = true;
+        if (interrupted_rebuild_ && !pending_rebuild_) {
+            pending_rebuild_ = std::move(interrupted_rebuild_);
+            keep_error_jobs_ =
+                2;  // this job and the restarted one: that does not hide why the scene did not open
+        }
+        interrupted_rebuild_.reset();
+        return;
     }
-    // Nothing changed before here, so a file that cannot be opened leaves the previous scene shown.
+    {
+        std::lock_guard lock(mutex_);
+        interrupted_rebuild_.reset();
+        if (pipeline_)
+            running_ = false;  // the previous scene's run ends (a run asked for at the start waits)
+    }
     const std::string scene = saved_options ? saved_options->scene.scene : options.scene.scene;
+    // The same scene again (another patch size, subdivision or form-factor method): its solution stays
+    // shown until the new one has its transport, and a Cancel keeps it.
+    if (!saved && pipeline_ && solver_ready_ && scene == shown_scene_) {
+        pipeline->prepare(progress_.get());
+        show_pipeline(std::move(pipeline), options, std::nullopt);
+        start_solver(Reset{options_.solver.method, options_.solver.tolerance, false}, true);
+        return;
+    }
     if (scene != shown_scene_ || !pipeline_) ++scene_version_;
     shown_scene_ = scene;
+    show_pipeline(std::move(pipeline), options, std::move(saved_options));
+    if (saved) {
+        display_ = pipeline_->build_display(options_.display);
+        publish(true, true);
+        publish_statistics();
+        pipeline_->prepare(progress_.get());
+        solver_ready_ = true;
+        continue_saved(saved_steps);
+        return;
+    }
+    show_preview();
+    pipeline_->prepare(progress_.get());
+    solver_ready_ = true;
+    const bool new_elements = &pipeline_->patches() != &pipeline_->loaded().patches;
+    // Adaptive, hierarchical or clustered leaves are new geometry; else the preview's direct light is
+    // traced again, now with the patches' means kept.
+    if (new_elements) {
+        display_ = pipeline_->build_display(options_.display);
+    } else if (options_.display.mode == ColourMode::smooth && options_.display.direct_light_at_vertices) {
+        pipeline_->add_direct_light(display_);
+    }
+    start_solver(Reset{options_.solver.method, options_.solver.tolerance, false}, true);
+}
+
+void SolverWorker::show_pipeline(std::unique_ptr<RadiosityPipeline> pipeline, const PipelineOptions& options,
+                                 std::optional<PipelineOptions> saved_options) {
     const DisplayOptions display = options_.display;
     const bool had_pipeline = pipeline_ != nullptr;
     options_ = options;
@@ -230,44 +301,44 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     saved_options_ = std::move(saved_options);
     remesh_unavailable_ = saved_options_ ? missing_scene(saved_options_->scene.scene) : std::string();
     ++opened_;
-    display_ = pipeline_->build_display(options_.display);
+    // The previous scene's plots and bounces are not this one's.
     start_bounce_history();
+    history_residual_.clear();
+    history_unshot_.clear();
     set_can_step(false);
-    publish(true, saved);
-    {
-        std::lock_guard lock(mutex_);
-        snapshot_.error.clear();
-        snapshot_.bad_input = false;
-    }
+    std::lock_guard lock(mutex_);
+    if (keep_error_jobs_ > 0) return;
+    snapshot_.error.clear();
+    snapshot_.bad_input = false;
+}
+
+void SolverWorker::show_preview() {
+    // The emission at once, then the emitters' direct light as soon as it is traced, while form factors run.
+    display_ = pipeline_->build_display(options_.display);
+    publish(true, true);
     publish_statistics();
-    pipeline_->prepare(progress_.get());
-    solver_ready_ = true;
-    // A saved solution's rebuilt elements were checked to be the saved ones, which are drawn already.
-    if (!saved && &pipeline_->patches() != &pipeline_->loaded().patches) {
-        // The transport's elements are new patches (adaptive or hierarchical leaves): new geometry to draw.
-        display_ = pipeline_->build_display(options_.display);
-        publish(true, false);
-    } else if (!saved && options_.display.mode == ColourMode::smooth &&
-               options_.display.direct_light_at_vertices) {
-        // The same geometry, now with the emitters' direct light at its vertices.
-        pipeline_->add_direct_light(display_);
-    }
-    if (!saved) {
-        reset_solver(Reset{options_.solver.method, options_.solver.tolerance, false});
-        return;
-    }
+    if (options_.display.mode != ColourMode::smooth || !options_.display.direct_light_at_vertices) return;
+    progress_->begin("direct light", 0);
+    pipeline_->add_preview_direct_light(display_);
+    if (!display_.direct.vertex.empty()) publish(false, true);
+}
+
+void SolverWorker::continue_saved(std::size_t saved_steps) {
     // The pipeline's solver continues from the saved radiosity; a reset would start it from the emission.
+    // A saved solution's rebuilt elements were checked to be the saved ones, which are drawn already.
     step_offset_ = saved_steps;
     start_bounce_history();
     add_bounce(pipeline_->solver().display_solution(),
                direct_light_share(display_, pipeline_->solver().display_solution()));
-    history_residual_.clear();
-    history_unshot_.clear();
     set_can_step(!pipeline_->solver().report().finished());
     publish(false, true);
 }
 
 void SolverWorker::reset_solver(const Reset& reset) {
+    start_solver(reset, false);
+}
+
+void SolverWorker::start_solver(const Reset& reset, bool geometry_changed) {
     if (!pipeline_) return;
     pipeline_->prepare(progress_.get());
     solver_ready_ = true;
@@ -284,9 +355,9 @@ void SolverWorker::reset_solver(const Reset& reset) {
     history_residual_.clear();
     history_unshot_.clear();
     set_can_step(!pipeline_->solver().report().finished());
-    publish(false, true);
+    publish(geometry_changed, true);
     std::lock_guard lock(mutex_);
-    snapshot_.error.clear();
+    if (keep_error_jobs_ == 0) snapshot_.error.clear();
 }
 
 void SolverWorker::take_step() {
@@ -316,7 +387,7 @@ void SolverWorker::switch_colour_mode(ColourMode mode) {
         vertex_bounces_[i] = std::make_shared<const std::vector<glm::vec3>>(
             vertex_radiance(display_, bounce_history_[i], bounce_direct_share_[i]));
     }
-    publish(true, solver_ready_ || pipeline_->saved());
+    publish(true, true);
 }
 
 void SolverWorker::start_bounce_history() {
@@ -367,6 +438,9 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
             // Before the transport is rebuilt: the saved state, with no bounce history.
             radiance->cumulative = vertex_radiance(display_, saved->display_solution);
             radiance->step = saved->report.steps;
+        } else if (!solver_ready_) {
+            // While form factors run: the emission, and the emitters' direct light once it is traced.
+            radiance->cumulative = vertex_radiance(display_, pipeline_->preview_radiosity(), 1.0);
         } else {
             radiance->cumulative = vertex_radiance(display_, pipeline_->solver().display_solution());
             radiance->bounces.assign(vertex_bounces_.begin(), vertex_bounces_.end());
@@ -374,9 +448,12 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
             radiance->step = step_offset_ + pipeline_->solver().report().step;
         }
     }
-    std::lock_guard lock(mutex_);
-    if (geometry) snapshot_.geometry = std::move(geometry);
-    snapshot_.radiance = std::move(radiance);
+    {
+        std::lock_guard lock(mutex_);
+        if (geometry) snapshot_.geometry = std::move(geometry);
+        snapshot_.radiance = std::move(radiance);
+    }
+    changed();
 }
 
 void SolverWorker::publish_statistics() {
@@ -386,6 +463,7 @@ void SolverWorker::publish_statistics() {
         statistics.saved_options = saved_options_;
         statistics.remesh_unavailable = remesh_unavailable_;
         statistics.opened = opened_;
+        statistics.warnings = pipeline_->loaded().scene.warnings;
         statistics.patches = pipeline_->patches().size();
         statistics.subdivision = std::string(subdivision_name(pipeline_->subdivision()));
         statistics.patch_size = pipeline_->loaded().patch_size;
@@ -403,8 +481,11 @@ void SolverWorker::publish_statistics() {
         statistics.log_residual = history_residual_;
         statistics.log_unshot = history_unshot_;
     }
-    std::lock_guard lock(mutex_);
-    snapshot_.statistics = std::move(statistics);
+    {
+        std::lock_guard lock(mutex_);
+        snapshot_.statistics = std::move(statistics);
+    }
+    changed();
 }
 
 void SolverWorker::fail(const std::string& message, bool bad_input) {

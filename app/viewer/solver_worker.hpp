@@ -1,8 +1,11 @@
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -25,8 +28,10 @@ namespace rad {
 // Progress::cancel() and drops the steps not yet taken; the destructor cancels and joins.
 class SolverWorker {
   public:
-    // Starts the thread, which loads `options`' scene and computes its form factors.
-    explicit SolverWorker(const PipelineOptions& options);
+    // Starts the thread, which loads `options`' scene and computes its form factors. `on_change` is called on
+    // the worker's thread after each new snapshot and at the end of each job (the viewer wakes its event
+    // loop with it).
+    explicit SolverWorker(const PipelineOptions& options, std::function<void()> on_change = {});
     ~SolverWorker();
     SolverWorker(const SolverWorker&) = delete;
     SolverWorker& operator=(const SolverWorker&) = delete;
@@ -46,6 +51,8 @@ class SolverWorker {
     // The stage and fraction of the work running now, when there is some.
     std::shared_ptr<const Progress> progress() const;
     bool busy() const;
+    // Counts the snapshots published and the jobs ended: what the render thread has not drawn yet differs.
+    std::uint64_t changes() const { return changes_.load(); }
     bool running() const;
     // Steps asked for and not yet taken.
     std::size_t pending_steps() const;
@@ -60,7 +67,13 @@ class SolverWorker {
     void loop();
     bool has_work() const;  // with mutex_ held
     void rebuild(const PipelineOptions& options);
+    // The newly loaded pipeline becomes the one shown; a new scene's is not prepared yet.
+    void show_pipeline(std::unique_ptr<RadiosityPipeline> pipeline, const PipelineOptions& options,
+                       std::optional<PipelineOptions> saved_options);
+    void show_preview();
+    void continue_saved(std::size_t saved_steps);
     void reset_solver(const Reset& reset);
+    void start_solver(const Reset& reset, bool geometry_changed);
     void take_step();
     void switch_colour_mode(ColourMode mode);
     void set_can_step(bool can_step);
@@ -72,11 +85,17 @@ class SolverWorker {
     void publish(bool geometry_changed, bool with_radiance);
     void publish_statistics();
     void fail(const std::string& message, bool bad_input = false);
+    void changed();  // without mutex_ held
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     // Requests, guarded by mutex_.
     std::optional<PipelineOptions> pending_rebuild_;
+    std::optional<PipelineOptions> current_rebuild_;      // the rebuild running now
+    std::optional<PipelineOptions> interrupted_rebuild_;  // cut short by a newer one
+    // Rebuilds, this one included, that keep the error shown: a failed load's, while the work it cut short
+    // starts again.
+    int keep_error_jobs_ = 0;
     std::optional<Reset> pending_reset_;
     std::optional<ColourMode> pending_colour_mode_;
     std::size_t pending_steps_ = 0;
@@ -108,6 +127,8 @@ class SolverWorker {
     std::size_t step_offset_ = 0;
     // The pipeline has a solver: prepare() returned (it can throw after counting a form-factor pass).
     bool solver_ready_ = false;
+    std::function<void()> on_change_;
+    std::atomic<std::uint64_t> changes_{0};
     tbb::task_arena arena_;  // where the work's parallel stages run
     std::thread thread_;     // last, so it starts after everything it uses exists
 };

@@ -11,9 +11,15 @@
 #include <exception>
 #include <iostream>
 
+#include <sys/resource.h>
+
+#include <imgui.h>
+
+#include "cli/camera_option.hpp"
 #include "rad/camera/camera_view.hpp"
 #include "rad/display/auto_exposure.hpp"
 #include "rad/io/image_file.hpp"
+#include "viewer/help_overlay.hpp"
 #include "viewer/window_screenshot.hpp"
 
 namespace rad {
@@ -22,11 +28,21 @@ namespace {
 
 // A tenth of the scene's size per second is slow for crossing it; a quarter crosses a room in a few seconds.
 constexpr double kSpeedPerSceneSize = 0.25;
-// With nothing to show changing and no focus, the loop sleeps this long between looks at the events.
+// With nothing to draw, the loop sleeps until an event, or this long (for --idle's end).
 constexpr double kIdleWaitSeconds = 0.25;
+// Frames drawn after the last input: Dear ImGui shows a click or a hover a frame or two later.
+constexpr int kFramesAfterInput = 3;
 // A stalled frame (the window dragged, the machine busy) moves the camera at most this long's worth, so the
 // view does not jump through a wall when frames resume.
 constexpr double kLongestMoveSeconds = 0.25;
+
+// User and system time of the whole process: the render thread, the worker and the driver's threads.
+double process_cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
 
 glm::dvec3 centre(const BoundingBox& box) {
     return box.empty() ? glm::dvec3(0.0) : 0.5 * (box.min + box.max);
@@ -39,33 +55,34 @@ Viewer::Viewer(const ViewerOptions& options)
       window_(options.width, options.height, "radiosity"),
       imgui_(window_.handle()),
       panel_(options.pipeline),
-      worker_(options.pipeline) {
+      worker_(options.pipeline, [] { glfwPostEmptyEvent(); }) {
     view_.auto_exposure = options.exposure.automatic;
     view_.exposure = options.exposure.ev;
     view_.mode = options.pipeline.display.mode;
-    if (options.steps > 0) worker_.request_steps(static_cast<std::size_t>(options.steps));
+    // Without a script the view opens at the first bounce, the direct light, rather than at the emission.
+    if (options.steps != 0)
+        worker_.request_steps(options.steps > 0 ? static_cast<std::size_t>(options.steps) : 1);
 }
 
 int Viewer::run() {
     double last = glfwGetTime();
     while (!window_.should_close()) {
-        const bool focused = glfwGetWindowAttrib(window_.handle(), GLFW_FOCUSED) == GLFW_TRUE;
         Framebuffer framebuffer;
         glfwGetFramebufferSize(window_.handle(), &framebuffer.width, &framebuffer.height);
         const bool minimized = framebuffer.width == 0 || framebuffer.height == 0;
-        const bool scripted = options_.steps >= 0 && !script_done_;
-        // Minimized, or in the background with no work to watch: sleep until something happens.
-        const bool waited = minimized || (!scripted && !focused && !worker_.busy());
+        const bool waited = minimized || !needs_frames();
         if (waited) {
             glfwWaitEventsTimeout(kIdleWaitSeconds);
         } else {
             glfwPollEvents();
         }
-        if (!focused) camera_input_.release();
+        if (glfwGetWindowAttrib(window_.handle(), GLFW_FOCUSED) != GLFW_TRUE) camera_input_.release();
         const double now = glfwGetTime();
         const double seconds = now - last;
         last = now;
-        if (minimized) continue;
+        advance_idle();
+        // Woken by the timeout with nothing new: nothing is drawn.
+        if (minimized || (waited && !needs_frames())) continue;
         // A frame after a sleep would count the sleep as its own duration.
         if (!waited) frames_.add(seconds, worker_.busy());
         frame(framebuffer, waited ? 0.0 : std::min(seconds, kLongestMoveSeconds));
@@ -73,7 +90,20 @@ int Viewer::run() {
     return exit_status_;
 }
 
+bool Viewer::needs_frames() {
+    if (window_.event_count() != seen_events_) {
+        seen_events_ = window_.event_count();
+        frames_owed_ = kFramesAfterInput;
+    }
+    const bool scripted = options_.steps >= 0 && !script_done_;
+    return scripted || worker_.busy() || worker_.changes() != drawn_changes_ || frames_owed_ > 0 ||
+           camera_input_.moving(window_.handle());
+}
+
 void Viewer::frame(const Framebuffer& framebuffer, double seconds) {
+    ++frames_drawn_;
+    frames_owed_ = std::max(frames_owed_ - 1, 0);
+    drawn_changes_ = worker_.changes();  // read before the snapshot: a change in between is drawn next time
     const bool worker_busy = worker_.busy();
     const SolverSnapshot snapshot = worker_.snapshot();
     take_worker_results(snapshot);
@@ -89,13 +119,18 @@ void Viewer::frame(const Framebuffer& framebuffer, double seconds) {
     }
     if (requests.reset_view && camera_) camera_->reset();
 
-    draw_scene(framebuffer);
+    const ViewRect view = view_rect(framebuffer, requests.docked_width);
+    if (requests.show_help) show_help_ = true;
+    const ImVec2 window = ImGui::GetIO().DisplaySize;
+    draw_help_overlay(show_help_, 0.5f * (requests.docked_width + window.x), 0.5f * window.y);
+    if (requests.copy_camera) copy_camera();
+    draw_scene(framebuffer, view);
     if (requests.screenshot) {
-        if (const auto written = save_screenshot(timestamped_screenshot_path(), framebuffer)) {
+        if (const auto written = save_screenshot(timestamped_screenshot_path(), view)) {
             panel_.set_message("screenshot: " + *written);
         }
     }
-    advance_script(snapshot, worker_busy, framebuffer);
+    advance_script(snapshot, worker_busy, view);
     imgui_.end_frame();
     window_.swap_buffers();
 }
@@ -159,6 +194,12 @@ void Viewer::handle_window_events(const WindowEvents& events, PanelRequests& req
             case GLFW_KEY_B:
                 view_.bounce_only = !view_.bounce_only;
                 break;
+            case GLFW_KEY_C:
+                requests.copy_camera = true;
+                break;
+            case GLFW_KEY_F1:
+                show_help_ = !show_help_;
+                break;
             case GLFW_KEY_ESCAPE:
                 window_.request_close();
                 break;
@@ -168,19 +209,29 @@ void Viewer::handle_window_events(const WindowEvents& events, PanelRequests& req
     }
 }
 
-void Viewer::draw_scene(const Framebuffer& framebuffer) {
+Viewer::ViewRect Viewer::view_rect(const Framebuffer& framebuffer, float docked_width) const {
+    // Dear ImGui counts in window units; the framebuffer may have more pixels (a HiDPI screen).
+    const float window_width = ImGui::GetIO().DisplaySize.x;
+    const int panel =
+        window_width > 0.0f
+            ? static_cast<int>(std::lround(docked_width * float(framebuffer.width) / window_width))
+            : 0;
+    const int x = std::clamp(panel, 0, std::max(framebuffer.width - 1, 0));
+    return ViewRect{x, framebuffer.width - x, framebuffer.height};
+}
+
+void Viewer::draw_scene(const Framebuffer& framebuffer, const ViewRect& view) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, framebuffer.width, framebuffer.height);
     // The shader writes the sRGB code of L · 2^exposure, as PNGs hold, whatever the window's framebuffer.
     glDisable(GL_FRAMEBUFFER_SRGB);
-    if (!camera_ || !geometry_) {
-        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        return;
-    }
-    const double aspect = double(framebuffer.width) / double(framebuffer.height);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!camera_ || !geometry_) return;
+    glViewport(view.x, 0, view.width, view.height);
+    const double aspect = double(view.width) / double(view.height);
     const glm::mat4 projection = view_projection(camera_->camera(), aspect, geometry_->bounds);
-    if (view_.auto_exposure) meter_exposure(projection, framebuffer);
+    if (view_.auto_exposure) meter_exposure(projection, view);
     DrawOptions draw;
     draw.exposure_scale = static_cast<float>(std::exp2(view_.exposure));
     draw.encode_srgb = true;
@@ -192,7 +243,7 @@ void Viewer::draw_scene(const Framebuffer& framebuffer) {
 // shows the same scene.
 constexpr int kMeterSide = 64;
 
-void Viewer::meter_exposure(const glm::mat4& view_projection, const Framebuffer& window) {
+void Viewer::meter_exposure(const glm::mat4& view_projection, const ViewRect& view) {
     // The emission alone (before the first bounce, while form factors compute) would meter the lights
     // themselves to grey: the exposure stays as it was until reflected light is shown.
     if (!radiance_) return;
@@ -202,28 +253,40 @@ void Viewer::meter_exposure(const glm::mat4& view_projection, const Framebuffer&
     if (!meter_) meter_ = std::make_unique<OffscreenTarget>(kMeterSide, kMeterSide, 1, PixelFormat::radiance);
     meter_->bind();
     renderer_.draw(view_projection, DrawOptions{});
-    view_.exposure = auto_exposure(Image{kMeterSide, kMeterSide, meter_->read_pixels()});
+    const double metered = auto_exposure(Image{kMeterSide, kMeterSide, meter_->read_pixels()});
+    // The panel, drawn before the meter this frame, shows the new value in the next.
+    if (metered != view_.exposure) frames_owed_ = std::max(frames_owed_, 1);
+    view_.exposure = metered;
     metered_view_ = view_projection;
     metered_colours_ = renderer_.colour_uploads();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, window.width, window.height);
+    glViewport(view.x, 0, view.width, view.height);
 }
 
-std::optional<std::string> Viewer::save_screenshot(const std::string& path, const Framebuffer& framebuffer) {
+void Viewer::copy_camera() {
+    if (!camera_) return;
+    const std::string text = camera_option_text(camera_->camera());
+    glfwSetClipboardString(window_.handle(), text.c_str());
+    std::printf("camera: %s\n", text.c_str());
+    std::fflush(stdout);
+    panel_.set_message("copied: " + text);
+}
+
+std::optional<std::string> Viewer::save_screenshot(const std::string& path, const ViewRect& view) {
     try {
-        write_image(path, read_window_image(framebuffer.width, framebuffer.height), 0.0);
+        // The 3D view alone, without the panel beside it.
+        write_image(path, read_window_image(view.width, view.height, view.x), 0.0);
     } catch (const std::exception& e) {
         std::cerr << "radiosity: error: screenshot " << path << ": " << e.what() << '\n';
         panel_.set_message(std::string("screenshot failed: ") + e.what());
         return std::nullopt;
     }
-    std::printf("wrote %s (%dx%d)\n", path.c_str(), framebuffer.width, framebuffer.height);
+    std::printf("wrote %s (%dx%d)\n", path.c_str(), view.width, view.height);
     std::fflush(stdout);
     return path;
 }
 
-void Viewer::advance_script(const SolverSnapshot& snapshot, bool worker_busy,
-                            const Framebuffer& framebuffer) {
+void Viewer::advance_script(const SolverSnapshot& snapshot, bool worker_busy, const ViewRect& view) {
     if (options_.steps < 0 || script_done_ || worker_busy) return;
     if (!snapshot.error.empty()) {
         std::cerr << "radiosity: error: " << snapshot.error << '\n';
@@ -243,7 +306,22 @@ void Viewer::advance_script(const SolverSnapshot& snapshot, bool worker_busy,
         "%.1f ms\n",
         radiance_->step, frames_.count(), frames_.mean() * 1e3, frames_.longest() * 1e3,
         FrameTimer::kWarmUpFrames, frames_.longest_while_busy() * 1e3);
-    if (!options_.screenshot.empty() && !save_screenshot(options_.screenshot, framebuffer)) exit_status_ = 1;
+    if (!options_.screenshot.empty() && !save_screenshot(options_.screenshot, view)) exit_status_ = 1;
+    if (options_.idle_seconds > 0.0) {
+        idle_ = IdleStart{glfwGetTime(), process_cpu_seconds(), frames_drawn_};
+    } else if (options_.exit) {
+        window_.request_close();
+    }
+}
+
+void Viewer::advance_idle() {
+    if (!idle_ || glfwGetTime() - idle_->time < options_.idle_seconds) return;
+    const double seconds = glfwGetTime() - idle_->time;
+    const double cpu = process_cpu_seconds() - idle_->cpu_seconds;
+    std::printf("idle %.1f s: %zu frames drawn, %.3f s of CPU (%.1f %% of a core)\n", seconds,
+                frames_drawn_ - idle_->frames, cpu, 100.0 * cpu / seconds);
+    std::fflush(stdout);
+    idle_.reset();
     if (options_.exit) window_.request_close();
 }
 

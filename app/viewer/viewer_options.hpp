@@ -18,6 +18,9 @@ struct ViewerOptions {
     int steps = -1;
     std::string screenshot;
     bool exit = false;
+    // Then stay open this long with nothing asked of it, and print the frames drawn and the CPU time used
+    // meanwhile (an idle window should sleep).
+    double idle_seconds = 0.0;
 };
 
 }  // namespace rad

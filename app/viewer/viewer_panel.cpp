@@ -4,10 +4,14 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "cli/progress_bar.hpp"
+#include "rad/io/saved_solution.hpp"
+#include "viewer/log_plot.hpp"
 #include "viewer/panel_text.hpp"
 
 namespace rad {
@@ -49,15 +53,45 @@ bool combo(const char* label, int& index, const std::vector<std::string>& names)
     return changed;
 }
 
-void plot(const char* label, const std::vector<float>& values) {
-    if (values.empty()) {
-        ImGui::TextDisabled("%s: no steps yet", label);
-        return;
+// A third of the window, within what the panel's widths need and leaving the view at least half.
+float docked_panel_width(float window_width) {
+    constexpr float kNarrowest = 260.0f;
+    constexpr float kWidest = 400.0f;
+    return std::min(std::clamp(0.3f * window_width, kNarrowest, kWidest), 0.5f * window_width);
+}
+
+// "form factors 42 %, about 17 s left": the share and the time left once they are known.
+std::string progress_label(const ProgressState& state, double stage_seconds) {
+    std::string label = state.stage.empty() ? std::string("working") : state.stage;
+    if (!state.share_known()) return label;
+    const double fraction = state.fraction();
+    label += " " + std::to_string(static_cast<int>(fraction * 100.0)) + " %";
+    if (progress_estimate_known(fraction, stage_seconds)) {
+        const double left = stage_seconds * (1.0 - fraction) / fraction;
+        label += ", about " + std::to_string(static_cast<long long>(std::llround(left))) + " s left";
     }
-    const auto [low, high] = std::minmax_element(values.begin(), values.end());
-    const std::string overlay = std::string(label) + " (log10): " + std::to_string(values.back());
-    ImGui::PlotLines("##plot", values.data(), static_cast<int>(values.size()), 0, overlay.c_str(), *low,
-                     std::max(*high, *low + 1e-3f), ImVec2(0, 60));
+    return label;
+}
+
+// What one step of the method is: only Jacobi's steps are bounces (the light of one more reflection).
+const char* step_name(SolverMethod method) {
+    switch (method) {
+        case SolverMethod::jacobi:
+            return "bounce";
+        case SolverMethod::southwell:
+            return "shot";
+        case SolverMethod::gauss_seidel:
+            return "sweep";
+        default:
+            return "step";
+    }
+}
+
+// "running" only while steps are being taken: a solver that has not finished but waits is paused.
+std::string solver_state(const ViewerStatistics& statistics, bool stepping) {
+    if (!statistics.prepared) return statistics.saved_options ? "saved" : "not solved";
+    if (statistics.status == SolverStatus::running && !stepping) return "paused";
+    return std::string(solver_status_name(statistics.status));
 }
 
 }  // namespace
@@ -86,9 +120,18 @@ PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const 
             options_.display = display;
             show_options();
         }
+        // A scene opened at its default patch size shows what that is (the statistics are the new scene's
+        // from here on, not the previous one's).
+        if (options_.scene.patch_size <= 0.0) options_.scene.patch_size = snapshot.statistics.patch_size;
     }
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::Begin("radiosity", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    // Docked: pinned to the left edge at the window's height, so no resize leaves it off-screen and it never
+    // covers the scene.
+    const ImVec2 window = ImGui::GetIO().DisplaySize;
+    const float width = docked_panel_width(window.x);
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, window.y), ImGuiCond_Always);
+    ImGui::Begin("radiosity", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    requests.docked_width = ImGui::IsWindowCollapsed() ? 0.0f : width;
     draw_progress(worker);
     if (ImGui::CollapsingHeader("Solver", ImGuiTreeNodeFlags_DefaultOpen)) draw_solver(worker, snapshot);
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) draw_view(worker, view, requests);
@@ -97,6 +140,11 @@ PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const 
     }
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         draw_statistics(snapshot.statistics, frames);
+    }
+    for (const std::string& warning : snapshot.statistics.warnings) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.8f, 0.3f, 1));
+        ImGui::TextWrapped("warning: %s", panel_text(warning).c_str());
+        ImGui::PopStyleColor();
     }
     if (!snapshot.error.empty()) {
         // Wrapped, so a long error does not stretch the panel.
@@ -109,23 +157,53 @@ PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const 
     return requests;
 }
 
+PipelineOptions options_for_new_scene(PipelineOptions options, const std::string& path) {
+    const PipelineOptions defaults;
+    options.scene.scene = path;
+    options.scene.patch_size = defaults.scene.patch_size;
+    options.subdivision = defaults.subdivision;
+    return options;
+}
+
 void ViewerPanel::open_scene(SolverWorker& worker, const std::string& path) {
     scene_path_ = path;
-    options_.scene.scene = path;
+    options_ = options_for_new_scene(options_, path);
+    show_options();
     worker.request_rebuild(options_);
+    // The direct light, once the form factors are known; a saved solution is shown at its own step.
+    if (!is_saved_solution_path(path)) worker.request_steps(1);
+}
+
+void ViewerPanel::use_scene_defaults() {
+    options_ = options_for_new_scene(options_, options_.scene.scene);
+    show_options();
 }
 
 void ViewerPanel::draw_progress(SolverWorker& worker) {
+    // The same widgets whether work runs or not, so the panel's layout does not jump when it starts.
     const std::shared_ptr<const Progress> progress = worker.progress();
-    if (!worker.busy() || !progress) {
-        ImGui::TextDisabled("idle");
-        return;
+    const bool working = worker.busy() && progress;
+    const ProgressState state = working ? progress->state() : ProgressState{};
+    if (working && (progress.get() != progress_seen_ || state.stage_number != stage_number_)) {
+        progress_seen_ = progress.get();
+        stage_number_ = state.stage_number;
+        stage_start_ = ImGui::GetTime();
     }
-    const std::string stage = progress->stage();
-    ImGui::ProgressBar(static_cast<float>(progress->fraction()), ImVec2(-80, 0),
-                       stage.empty() ? "working" : stage.c_str());
+    const std::string label =
+        working ? progress_label(state, ImGui::GetTime() - stage_start_) : std::string("idle");
+    ImGui::ProgressBar(working ? static_cast<float>(state.fraction()) : 0.0f, ImVec2(-80, 0), label.c_str());
     ImGui::SameLine();
+    ImGui::BeginDisabled(!working);
     if (ImGui::Button("Cancel")) worker.cancel();
+    ImGui::EndDisabled();
+    // What the stage costs, as the library estimated it before starting ("13229 patches x 2048 rays, about
+    // 170 MB"); one line kept for it either way.
+    std::string note;
+    if (working) {
+        for (const ProgressNote& n : progress->notes())
+            if (n.stage == state.stage) note = n.text;
+    }
+    ImGui::TextDisabled("%s", panel_text(note).c_str());
 }
 
 void ViewerPanel::draw_solver(SolverWorker& worker, const SolverSnapshot& snapshot) {
@@ -149,26 +227,23 @@ void ViewerPanel::draw_solver(SolverWorker& worker, const SolverSnapshot& snapsh
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("A fresh solver (B = E) with the method and tolerance above");
     const std::size_t steps = snapshot.radiance ? snapshot.radiance->step : 0;
-    ImGui::Text("bounce %zu (%s), %s", steps, std::string(solver_method_name(statistics.method)).c_str(),
-                statistics.prepared        ? std::string(solver_status_name(statistics.status)).c_str()
-                : statistics.saved_options ? "saved"
-                                           : "not solved");
+    ImGui::Text("%s %zu (%s), %s", step_name(statistics.method), steps,
+                std::string(solver_method_name(statistics.method)).c_str(),
+                solver_state(statistics, worker.running() || worker.pending_steps() > 0).c_str());
     if (!statistics.status_message.empty())
         ImGui::TextWrapped("%s", panel_text(statistics.status_message).c_str());
-    ImGui::PushID("residual");
-    plot("residual", statistics.log_residual);
-    ImGui::PopID();
-    ImGui::PushID("unshot");
+    log_plot("residual (share of emitted power)", statistics.log_residual);
     // Southwell's unshot power; for the others the power of the last update (Jacobi: the newest bounce).
-    plot(statistics.method == SolverMethod::southwell ? "unshot power" : "update power",
-         statistics.log_unshot);
-    ImGui::PopID();
+    log_plot(statistics.method == SolverMethod::southwell ? "unshot power (radiosity x area)"
+                                                          : "update power (radiosity x area)",
+             statistics.log_unshot);
 }
 
 void ViewerPanel::draw_view(SolverWorker& worker, ViewSettings& view, PanelRequests& requests) {
     // The slider shows the metered value while auto is on; moving it fixes the exposure there.
     float exposure = static_cast<float>(view.exposure);
-    if (ImGui::SliderFloat("exposure", &exposure, -8.0f, 8.0f, "%.1f")) {
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    if (ImGui::SliderFloat("exposure", &exposure, -24.0f, 24.0f, "%.1f")) {
         view.exposure = exposure;
         view.auto_exposure = false;
     }
@@ -188,9 +263,14 @@ void ViewerPanel::draw_view(SolverWorker& worker, ViewSettings& view, PanelReque
     ImGui::Checkbox("orbit (Tab)", &view.orbit);
     ImGui::SameLine();
     if (ImGui::Button("Reset view (R)")) requests.reset_view = true;
-    ImGui::SameLine();
     if (ImGui::Button("Screenshot (F12)")) requests.screenshot = true;
-    ImGui::TextDisabled("WASD fly, Q/E down/up, right drag look, wheel speed");
+    ImGui::SameLine();
+    if (ImGui::Button("Copy --camera (C)")) requests.copy_camera = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The view as render's --camera and --fov, to the clipboard");
+    ImGui::SameLine();
+    if (ImGui::Button("Keys (F1)")) requests.show_help = true;
+    ImGui::TextDisabled("WASD fly, Q/E down/up, right drag look");
 }
 
 void ViewerPanel::draw_bounce_choice(const SolverWorker& worker, ViewSettings& view) {
@@ -215,10 +295,13 @@ void ViewerPanel::draw_bounce_choice(const SolverWorker& worker, ViewSettings& v
 }
 
 void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& statistics) {
-    ImGui::InputText("scene", &scene_path_);
+    // Enter in the field opens it, as the button does.
+    const bool entered = ImGui::InputText("scene", &scene_path_, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    if (ImGui::Button("Open")) open_scene(worker, scene_path_);
-    ImGui::TextDisabled("or drop a .obj, .ply, .gltf, .glb or .radiosity (solve --save) file on the window");
+    if (ImGui::Button("Open") || entered) open_scene(worker, scene_path_);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("or drop a .obj, .ply, .gltf, .glb or .radiosity (solve --save) file on the window");
+    ImGui::PopStyleColor();
     // As --sky and --sun; read when the scene is opened or recomputed, and a bad value is reported there.
     ImGui::InputText("sky", &options_.scene.sky);
     if (ImGui::IsItemHovered())
@@ -228,8 +311,10 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "X,Y,Z,E or X,Y,Z,R,G,B: toward the sun, and its irradiance; none or empty: the scene's own");
-    if (options_.scene.patch_size <= 0.0) options_.scene.patch_size = statistics.patch_size;
-    ImGui::InputDouble("patch size", &options_.scene.patch_size, 0.0, 0.0, "%.4g");
+    // 0 until the scene (or the subdivision) chosen says what its default is.
+    ImGui::InputDouble("patch size", &options_.scene.patch_size, 0.0, 0.0,
+                       options_.scene.patch_size > 0.0 ? "%.4g" : "default");
+    options_.scene.patch_size = std::max(options_.scene.patch_size, 0.0);
     if (ImGui::Combo("form factors", &form_factor_index_, kFormFactorNames, 2)) {
         options_.form_factors.method =
             form_factor_index_ == 1 ? FormFactorMethod::analytic : FormFactorMethod::hemisphere;
@@ -242,14 +327,7 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
     // A saved solution is recomputed from the scene it was solved from.
     const std::optional<PipelineOptions>& saved = statistics.saved_options;
     ImGui::BeginDisabled(!statistics.remesh_unavailable.empty());
-    if (ImGui::Button("Re-mesh and recompute")) {
-        options_.solver.method = solver_names()[static_cast<std::size_t>(method_index_)];
-        options_.scene.scene = saved                      ? saved->scene.scene
-                               : statistics.scene.empty() ? scene_path_
-                                                          : statistics.scene;
-        worker.request_rebuild(options_);
-    }
-    ImGui::EndDisabled();
+    if (ImGui::Button("Re-mesh and recompute")) remesh(worker, statistics);
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
         if (!statistics.remesh_unavailable.empty()) {
             ImGui::SetTooltip("%s", statistics.remesh_unavailable.c_str());
@@ -259,15 +337,35 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
                 saved->scene.scene.c_str());
         }
     }
+    ImGui::SameLine();
+    if (ImGui::Button("Scene defaults")) {
+        use_scene_defaults();
+        remesh(worker, statistics);
+    }
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && statistics.remesh_unavailable.empty())
+        ImGui::SetTooltip("Re-mesh at the scene's own patch size and subdivision (auto)");
+}
+
+void ViewerPanel::remesh(SolverWorker& worker, const ViewerStatistics& statistics) {
+    options_.solver.method = solver_names()[static_cast<std::size_t>(method_index_)];
+    const std::optional<PipelineOptions>& saved = statistics.saved_options;
+    options_.scene.scene = saved                      ? saved->scene.scene
+                           : statistics.scene.empty() ? scene_path_
+                                                      : statistics.scene;
+    worker.request_rebuild(options_);
+    worker.request_steps(1);
 }
 
 void ViewerPanel::draw_statistics(const ViewerStatistics& statistics, const FrameTimer& frames) {
-    ImGui::Text("%zu patches (%s, size %.4g), %zu %s", statistics.patches, statistics.subdivision.c_str(),
-                statistics.patch_size, statistics.interactions, statistics.interaction_name.c_str());
-    ImGui::Text("seconds: mesh %.3f, form factors %.3f, solve %.3f", statistics.seconds.mesh,
-                statistics.seconds.form_factors, statistics.seconds.solve);
-    ImGui::Text("frame %.1f ms (mean %.1f ms), longest while working %.1f ms", frames.latest() * 1e3,
-                frames.mean() * 1e3, frames.longest_while_busy() * 1e3);
+    ImGui::TextWrapped("%zu patches (%s, size %.4g)", statistics.patches, statistics.subdivision.c_str(),
+                       statistics.patch_size);
+    if (statistics.prepared)
+        ImGui::TextWrapped("%zu %s", statistics.interactions, statistics.interaction_name.c_str());
+    ImGui::TextWrapped("seconds: mesh %.3f, form factors %.3f, solve %.3f", statistics.seconds.mesh,
+                       statistics.seconds.form_factors, statistics.seconds.solve);
+    ImGui::TextWrapped("frame %.1f ms (mean %.1f ms), longest while working %.1f ms", frames.latest() * 1e3,
+                       frames.mean() * 1e3, frames.longest_while_busy() * 1e3);
 }
 
 }  // namespace rad

@@ -14,11 +14,21 @@ namespace rad {
 struct PanelRequests {
     bool screenshot = false;
     bool reset_view = false;
+    bool copy_camera = false;
+    bool show_help = false;
+    // The width the panel takes at the window's left edge, in Dear ImGui's units (the window's, not its
+    // framebuffer's); 0 while it is collapsed to its title bar. The 3D view is drawn beside it.
+    float docked_width = 0.0f;
 };
 
-// The Dear ImGui panel: solver and meshing controls (sent to the worker), view settings, the progress of
-// running work with a cancel button, the residual plot and statistics. Call draw() between ImGui's NewFrame
-// and Render.
+// The options a scene opened from the panel starts from: the panel's, at the scene's own default patch size
+// and the default subdivision, since another scene is of another scale (a patch size of 20 suits the Cornell
+// box's millimetres, not a unit cube).
+PipelineOptions options_for_new_scene(PipelineOptions options, const std::string& path);
+
+// The Dear ImGui panel, docked at the window's left edge over its whole height: solver and meshing controls
+// (sent to the worker), view settings, the progress of running work with a cancel button, the residual plot
+// and statistics. Call draw() between ImGui's NewFrame and Render.
 class ViewerPanel {
   public:
     explicit ViewerPanel(const PipelineOptions& options);
@@ -31,7 +41,10 @@ class ViewerPanel {
     void set_message(const std::string& message) { message_ = message; }
 
   private:
-    void show_options();  // the controls' choices from options_
+    void show_options();        // the controls' choices from options_
+    void use_scene_defaults();  // the scene's own patch size and the default subdivision
+    // Loads the scene shown (or the one a saved solution came from) again with the panel's settings.
+    void remesh(SolverWorker& worker, const ViewerStatistics& statistics);
     void draw_solver(SolverWorker& worker, const SolverSnapshot& snapshot);
     void draw_progress(SolverWorker& worker);
     void draw_plot(const ViewerStatistics& statistics);
@@ -46,6 +59,9 @@ class ViewerPanel {
     int subdivision_index_ = 0;  // the position in all_subdivisions()
     std::uint64_t opened_ = 0;   // the worker's ViewerStatistics::opened last seen
     std::string scene_path_;
+    const Progress* progress_seen_ = nullptr;  // the job whose stage started at stage_start_
+    std::uint64_t stage_number_ = 0;
+    double stage_start_ = 0.0;
     std::string message_;
 };
 

@@ -8,10 +8,10 @@
 
 namespace rad {
 
-Image read_window_image(int width, int height) {
+Image read_window_image(int width, int height, int x) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
-    return Image{width, height, read_display_pixels(width, height)};
+    return Image{width, height, read_display_pixels(width, height, x, 0)};
 }
 
 std::string timestamped_screenshot_path(const std::filesystem::path& folder) {

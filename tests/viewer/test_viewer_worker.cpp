@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 #include "pipeline/radiosity_pipeline.hpp"
@@ -180,7 +181,81 @@ TEST(ViewerWorker, CancelStopsTheFormFactorsPromptly) {
     const SolverSnapshot snapshot = worker.snapshot();
     EXPECT_NE(snapshot.error.find("cancelled"), std::string::npos) << snapshot.error;
     EXPECT_FALSE(snapshot.statistics.prepared);
-    EXPECT_FALSE(snapshot.radiance);
+    // The view is not black: the preview of the emitters' direct light, traced before the form factors,
+    // stays. With the emission alone only the lamp's vertices (under 2 %) would be lit; the floor, the walls
+    // and the blocks see the lamp.
+    ASSERT_TRUE(snapshot.radiance && snapshot.geometry);
+    ASSERT_EQ(snapshot.radiance->cumulative.size(), snapshot.geometry->positions.size());
+    EXPECT_EQ(snapshot.radiance->step, 0u);
+    std::size_t lit = 0;
+    for (const glm::vec3& l : snapshot.radiance->cumulative) {
+        ASSERT_TRUE(std::isfinite(l.r + l.g + l.b));
+        if (l.r + l.g + l.b > 0.0f) ++lit;
+    }
+    EXPECT_GT(lit, snapshot.radiance->cumulative.size() / 2);
+}
+
+// Waits until the worker runs `stage`; false if it does not within the limit.
+bool wait_for_stage(const SolverWorker& worker, const std::string& stage, std::chrono::seconds limit) {
+    const auto give_up = Clock::now() + limit;
+    while (!(worker.progress() && worker.progress()->stage() == stage)) {
+        if (Clock::now() > give_up) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return true;
+}
+
+TEST(ViewerWorker, ReMeshingKeepsTheSolutionShownUntilTheNewOneIsReadyAndACancelKeepsIt) {
+    SolverWorker worker(cornell(100.0));
+    worker.request_steps(2);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot solved = worker.snapshot();
+    ASSERT_TRUE(solved.radiance && solved.geometry);
+    ASSERT_EQ(solved.radiance->step, 2u);
+
+    PipelineOptions finer = cornell(12.0);
+    finer.subdivision.method = "uniform";
+    worker.request_rebuild(finer);
+    ASSERT_TRUE(wait_for_stage(worker, "form factors", std::chrono::seconds(120)));
+    const SolverSnapshot during = worker.snapshot();
+    EXPECT_EQ(during.geometry, solved.geometry);
+    EXPECT_EQ(during.radiance, solved.radiance);
+    EXPECT_EQ(during.statistics.patches, solved.statistics.patches);
+
+    worker.cancel();
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(30)));
+    const SolverSnapshot after = worker.snapshot();
+    EXPECT_NE(after.error.find("cancelled"), std::string::npos) << after.error;
+    EXPECT_EQ(after.geometry, solved.geometry);
+    ASSERT_TRUE(after.radiance);
+    EXPECT_EQ(after.radiance->step, 2u);
+    EXPECT_TRUE(after.statistics.prepared);
+    // The solution shown can still be stepped.
+    worker.request_steps(1);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    ASSERT_TRUE(worker.snapshot().radiance);
+    EXPECT_EQ(worker.snapshot().radiance->step, 3u);
+}
+
+TEST(ViewerWorker, AFileThatCannotBeOpenedStartsTheInterruptedFormFactorsAgain) {
+    PipelineOptions options = cornell(12.0);
+    options.subdivision.method = "uniform";
+    SolverWorker worker(options);
+    ASSERT_TRUE(wait_for_stage(worker, "form factors", std::chrono::seconds(120)));
+    PipelineOptions missing = options;
+    missing.scene.scene = "/nonexistent/dropped.obj";
+    worker.request_rebuild(missing);
+    // The failed load reports itself and queues the cut-short work again.
+    const auto give_up = Clock::now() + std::chrono::seconds(60);
+    while (worker.snapshot().error.find("dropped.obj") == std::string::npos && Clock::now() < give_up)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    EXPECT_TRUE(worker.snapshot().bad_input);
+    EXPECT_TRUE(wait_for_stage(worker, "form factors", std::chrono::seconds(120)));
+    EXPECT_EQ(worker.snapshot().statistics.scene, "builtin:cornell");
+    // The message stays while the restarted work runs.
+    EXPECT_NE(worker.snapshot().error.find("dropped.obj"), std::string::npos) << worker.snapshot().error;
+    worker.cancel();
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(30)));
 }
 
 TEST(ViewerWorker, ABadSceneIsReportedAsBadInput) {

@@ -4,23 +4,104 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
+#include <vector>
 
 namespace rad {
 
-Camera frame_bounding_box(const BoundingBox& box, double fov_degrees) {
+namespace {
+
+// From the centre towards the eye: in front (+z), a little from above and the right.
+const glm::dvec3 kFrontView = glm::normalize(glm::dvec3(0.35, 0.3, 1.0));
+
+// Twice the area of a face along its front normal (Newell's sum over its corners), and its centroid.
+struct FaceArea {
+    glm::dvec3 vector{0.0};
+    glm::dvec3 centre{0.0};
+};
+
+FaceArea face_area_vector(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle face) {
+    FaceArea area;
+    int corners = 0;
+    for (auto edge : mesh.fh_range(face)) {
+        const glm::dvec3 a = to_glm(mesh.point(mesh.from_vertex_handle(edge)));
+        const glm::dvec3 b = to_glm(mesh.point(mesh.to_vertex_handle(edge)));
+        area.vector += glm::cross(a, b);
+        area.centre += a;
+        ++corners;
+    }
+    if (corners > 0) area.centre /= double(corners);
+    return area;
+}
+
+// The views tried, the usual one first: from the front, the right, behind and the left (turned about +y),
+// each from a little to the right, to the left, and straight on (a room's side walls both face an eye
+// straight in front of its opening; one offset to a side would stand beyond that side's wall).
+std::vector<glm::dvec3> candidate_views() {
+    std::vector<glm::dvec3> views;
+    for (const double side : {0.35, -0.35, 0.0}) {
+        glm::dvec3 v = glm::normalize(glm::dvec3(side, 0.3, 1.0));
+        for (int turns = 0; turns < 4; ++turns) {
+            views.push_back(v);
+            v = glm::dvec3(v.z, v.y, -v.x);
+        }
+    }
+    return views;
+}
+
+}  // namespace
+
+Camera frame_bounding_box(const BoundingBox& box, double fov_degrees, const glm::dvec3& towards_eye) {
     const glm::dvec3 centre = box.empty() ? glm::dvec3(0.0) : (box.min + box.max) * 0.5;
     const double radius = std::max(0.5 * glm::length(box.extent()), 1e-9);
     const double distance = radius / std::sin(glm::radians(fov_degrees) * 0.5);
     Camera camera;
     camera.target = centre;
-    camera.eye = centre + distance * glm::normalize(glm::dvec3(0.35, 0.3, 1.0));
+    camera.eye = centre + distance * glm::normalize(towards_eye);
     camera.up = {0.0, 1.0, 0.0};
     camera.fov_degrees = fov_degrees;
     return camera;
 }
 
+Camera frame_bounding_box(const BoundingBox& box, double fov_degrees) {
+    return frame_bounding_box(box, fov_degrees, kFrontView);
+}
+
+glm::dvec3 front_side(const Scene& scene, double fov_degrees) {
+    std::vector<FaceArea> faces;
+    double total = 0.0;
+    for (const Surface& surface : scene.surfaces) {
+        for (auto face : surface.mesh.faces()) {
+            faces.push_back(face_area_vector(surface.mesh, face));
+            total += glm::length(faces.back().vector);
+        }
+    }
+    // Each face counts its area as the eye sees it: positive from its front, negative from behind (culled,
+    // so the eye looks through it). A closed room shows as much of one as of the other from every side.
+    const BoundingBox box = bounding_box(scene);
+    const std::vector<glm::dvec3> views = candidate_views();
+    std::size_t best = 0;
+    double best_seen = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        const glm::dvec3 eye = frame_bounding_box(box, fov_degrees, views[i]).eye;
+        double seen = 0.0;
+        for (const FaceArea& face : faces) {
+            const glm::dvec3 to_eye = eye - face.centre;
+            const double distance = glm::length(to_eye);
+            if (distance > 0.0) seen += glm::dot(face.vector, to_eye) / distance;
+        }
+        // Another view only when it clearly shows more: symmetric and closed scenes keep the usual one.
+        if (i == 0 || seen > best_seen + 0.01 * total) {
+            best = i;
+            best_seen = seen;
+        }
+    }
+    return views[best];
+}
+
 Camera scene_camera(const Scene& scene) {
-    return scene.camera ? *scene.camera : frame_bounding_box(bounding_box(scene));
+    return scene.camera ? *scene.camera
+                        : frame_bounding_box(bounding_box(scene), 45.0, front_side(scene, 45.0));
 }
 
 glm::mat4 view_projection(const Camera& camera, double aspect, const BoundingBox& scene_box) {

@@ -260,7 +260,7 @@ void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput&
         const std::uint32_t q = display.weight_patch[display.weight_begin[v]];
         exact[v] = is_textured(display, q) ? light[v].irradiance : input.reflectance[q] * light[v].irradiance;
     }
-    keep_patch_means(display, input.patch_direct, light, exact);
+    if (input.keep_patch_means) keep_patch_means(display, input.patch_direct, light, exact);
     std::vector<glm::vec3> vertex(display.vertex_count());
     for (std::size_t v = 0; v < vertex.size(); ++v) vertex[v] = glm::vec3(glm::max(exact[v], 0.0));
     display.direct.patch.assign(input.patch_direct.begin(), input.patch_direct.end());

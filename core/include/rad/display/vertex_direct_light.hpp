@@ -27,6 +27,9 @@ struct VertexDirectLightInput {
     std::span<const double> area{};
     std::span<const glm::dvec3> patch_direct{};
     std::uint64_t seed = 1;
+    // false before any transport exists (a preview of the light while form factors run): patch_direct is
+    // not known, and each vertex keeps its exact value.
+    bool keep_patch_means = true;
 };
 
 // Fills display.direct: the emitters' direct light at every vertex, where a patch's mean would blur shadow

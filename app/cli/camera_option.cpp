@@ -1,0 +1,50 @@
+#include "cli/camera_option.hpp"
+
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <vector>
+
+#include "cli/comma_numbers.hpp"
+#include "rad/util/error.hpp"
+
+namespace rad {
+
+namespace {
+
+glm::dvec3 vec(const std::vector<double>& v, std::size_t at) {
+    return {v[at], v[at + 1], v[at + 2]};
+}
+
+std::string numbers(const glm::dvec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%.7g,%.7g,%.7g", v.x, v.y, v.z);
+    return text;
+}
+
+}  // namespace
+
+Camera parse_camera(const std::string& text, const Camera& fallback, const std::string& where) {
+    const std::vector<double> values = comma_numbers(text, where, "ex,ey,ez,tx,ty,tz[,ux,uy,uz]");
+    if (values.size() != 6 && values.size() != 9) {
+        throw InputError(where + ": " + std::to_string(values.size()) +
+                         " numbers; want 6 (eye, target) or 9 (eye, target, up)");
+    }
+    Camera camera = fallback;
+    camera.eye = vec(values, 0);
+    camera.target = vec(values, 3);
+    if (values.size() == 9) camera.up = vec(values, 6);
+    if (glm::length(camera.target - camera.eye) == 0.0) throw InputError(where + ": eye and target coincide");
+    if (glm::length(glm::cross(camera.target - camera.eye, camera.up)) == 0.0) {
+        throw InputError(where + ": the up vector is zero or points along the view direction");
+    }
+    return camera;
+}
+
+std::string camera_option_text(const Camera& camera) {
+    char fov[32];
+    std::snprintf(fov, sizeof fov, "%.6g", camera.fov_degrees);
+    return "--camera " + numbers(camera.eye) + "," + numbers(camera.target) + "," + numbers(camera.up) +
+           " --fov " + fov;
+}
+
+}  // namespace rad
