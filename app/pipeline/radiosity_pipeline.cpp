@@ -7,6 +7,7 @@
 #include "rad/display/vertex_direct_light.hpp"
 #include "rad/mesh/patch_albedo.hpp"
 #include "rad/ray/ray_scene.hpp"
+#include "rad/transport/material_update.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
 
@@ -235,6 +236,35 @@ void RadiosityPipeline::restart_solver(SolverMethod method, const SolverOptions&
     solver_ = make_solver(method, *built_.transport, options);
     method_ = method;
     solver_options_ = options;
+}
+
+void RadiosityPipeline::edit_material(const std::string& name, const glm::dvec3& reflectance,
+                                      const glm::dvec3& emitted_radiance) {
+    prepare();
+    std::vector<Surface*> edited;
+    for (Surface& surface : loaded_.scene.surfaces)
+        if (surface.material.name == name) edited.push_back(&surface);
+    if (edited.empty()) throw InputError("material " + name + ": no surface has it");
+    Material material = edited.front()->material;
+    if (!material.texture) material.reflectance = reflectance;
+    material.emission = emitted_radiance;
+    validate_material(material, "material " + name);
+    for (Surface* surface : edited) {
+        surface->material.reflectance = material.reflectance;
+        surface->material.emission = material.emission;
+    }
+    update_element_materials(*built_.transport, patches(), loaded_.scene);
+    // The light as it stands is where the new solution starts: a small edit converges in a few steps.
+    SolverOptions options = solver_options_;
+    options.initial = InitialGuess::given;
+    options.given.assign(solver_->solution().begin(), solver_->solution().end());
+    if (method_ == SolverMethod::southwell) {
+        method_ = SolverMethod::jacobi;
+        options.max_steps = options_.solver.bounces;
+    }
+    solver_ = make_solver(method_, *built_.transport, options);
+    solver_options_ = std::move(options);
+    display_.reset();
 }
 
 const DisplayMesh& RadiosityPipeline::display() const {

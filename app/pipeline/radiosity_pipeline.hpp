@@ -75,6 +75,14 @@ class RadiosityPipeline {
     // --solver for a method the transport cannot run.
     void restart_solver(SolverMethod method, const SolverOptions& options);
 
+    // The viewer's edit: the material named `name` takes this reflectance (kept as it is on a textured
+    // material, whose texels give it) and emitted radiance Le on every surface that has it. The transport
+    // keeps its form factors or links; the solver starts again from the solution as it stands (southwell's
+    // by jacobi, which can start from any radiosity). After prepare. Throws InputError naming the material
+    // for a reflectance outside [0, 1), a negative or non-finite emission, or a name no surface has.
+    void edit_material(const std::string& name, const glm::dvec3& reflectance,
+                       const glm::dvec3& emitted_radiance);
+
     const LoadedScene& loaded() const { return loaded_; }
     // The patches the solution belongs to: the meshed scene's, or after prepare the adaptive or
     // hierarchical leaves.

@@ -56,7 +56,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
     glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned) { count_event(w); });
     glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double, double) { count_event(w); });
     glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { count_event(w); });
-    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int, int) { count_event(w); });
+    glfwSetMouseButtonCallback(window_, on_mouse_button);
     glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { count_event(w); });
     glfwSetWindowSizeCallback(window_, [](GLFWwindow* w, int, int) { count_event(w); });
     glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { count_event(w); });
@@ -87,6 +87,14 @@ WindowEvents GlfwWindow::take_events() {
 
 void GlfwWindow::count_event(GLFWwindow* window) {
     ++owner(window).event_count_;
+}
+
+void GlfwWindow::on_mouse_button(GLFWwindow* window, int button, int action, int) {
+    count_event(window);
+    if (button != GLFW_MOUSE_BUTTON_LEFT || action != GLFW_PRESS) return;
+    glm::dvec2 at(0.0);
+    glfwGetCursorPos(window, &at.x, &at.y);
+    owner(window).events_.clicks.push_back(at);
 }
 
 void GlfwWindow::on_scroll(GLFWwindow* window, double, double dy) {

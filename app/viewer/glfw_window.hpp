@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/vec2.hpp>
 
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@ struct WindowEvents {
     double scroll = 0.0;               // wheel steps, up positive
     std::vector<int> pressed_keys;     // GLFW key codes, in order
     std::vector<std::string> dropped;  // paths of files dropped on the window
+    std::vector<glm::dvec2> clicks;    // where the left button went down, in window coordinates
 };
 
 // The platform side of the viewer: GLFW, one window with an OpenGL 3.3 core context made current on the
@@ -41,6 +43,7 @@ class GlfwWindow {
     static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
     static void on_drop(GLFWwindow* window, int count, const char** paths);
     static void count_event(GLFWwindow* window);
+    static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
 
     GLFWwindow* window_ = nullptr;
     WindowEvents events_;

@@ -22,6 +22,8 @@ struct ViewerGeometry {
     std::vector<std::uint32_t> triangles;  // three indices per triangle
     std::vector<std::uint32_t> outline;    // two indices per patch edge
     std::vector<glm::vec2> texcoords;      // per vertex where any surface is textured
+    // Per triangle, its material's place in ViewerStatistics::materials (for picking by a click).
+    std::vector<std::uint32_t> triangle_material;
     std::vector<DisplayMesh::TexturedRange> textured;
     BoundingBox bounds;
     Camera scene_camera;
@@ -48,6 +50,15 @@ struct ViewerRadiance {
     }
 };
 
+// A material of the scene shown, as the panel edits it (every surface of that name at once).
+struct ViewerMaterial {
+    std::string name;
+    glm::dvec3 reflectance{0.0};
+    glm::dvec3 emitted_radiance{0.0};  // Le
+    bool textured = false;             // its reflectance comes from its texels
+    double area = 0.0;                 // of its surfaces, for the emitted power π Le A
+};
+
 // Figures for the panel, small enough to copy every frame.
 struct ViewerStatistics {
     std::string scene;  // what is open: a scene, or a saved solution (FILE.radiosity)
@@ -57,6 +68,7 @@ struct ViewerStatistics {
     std::string remesh_unavailable;     // why those cannot be recomputed (the scene file is gone), or empty
     std::uint64_t opened = 0;           // scenes and saved solutions opened so far
     std::vector<std::string> warnings;  // the loader's about the scene shown (clamped values, skipped faces)
+    std::vector<ViewerMaterial> materials;  // in the order of their first surface
     std::size_t patches = 0;
     std::size_t interactions = 0;  // the transport's form factors, or links
     std::string interaction_name;  // "form factors", "links"

@@ -50,6 +50,38 @@ std::string missing_scene(const std::string& source) {
     return "the scene this solution was solved from, " + source + ", is not found";
 }
 
+// The scene's materials by name, in the order of their first surface.
+std::vector<ViewerMaterial> scene_materials(const Scene& scene) {
+    std::vector<ViewerMaterial> materials;
+    for (const Surface& surface : scene.surfaces) {
+        const Material& m = surface.material;
+        auto found = std::find_if(materials.begin(), materials.end(),
+                                  [&](const ViewerMaterial& v) { return v.name == m.name; });
+        if (found == materials.end()) {
+            materials.push_back({m.name, m.reflectance, m.emission, m.texture != nullptr, 0.0});
+            found = materials.end() - 1;
+        }
+        found->area += surface_area(surface.mesh);
+    }
+    return materials;
+}
+
+std::vector<std::uint32_t> triangle_materials(const Scene& scene, const PatchMesh& patches,
+                                              const DisplayMesh& display) {
+    const std::vector<ViewerMaterial> materials = scene_materials(scene);
+    std::vector<std::uint32_t> of_surface(scene.surfaces.size(), 0);
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        const auto found = std::find_if(materials.begin(), materials.end(), [&](const ViewerMaterial& v) {
+            return v.name == scene.surfaces[s].material.name;
+        });
+        of_surface[s] = static_cast<std::uint32_t>(found - materials.begin());
+    }
+    std::vector<std::uint32_t> triangle(display.triangle_patch.size());
+    for (std::size_t t = 0; t < triangle.size(); ++t)
+        triangle[t] = of_surface[patches.patches[display.triangle_patch[t]].surface];
+    return triangle;
+}
+
 }  // namespace
 
 SolverWorker::SolverWorker(const PipelineOptions& options, std::function<void()> on_change)
@@ -113,6 +145,16 @@ void SolverWorker::request_colour_mode(ColourMode mode) {
     wake_.notify_all();
 }
 
+void SolverWorker::request_material_edit(const std::string& name, const glm::dvec3& reflectance,
+                                         const glm::dvec3& emitted_radiance) {
+    {
+        std::lock_guard lock(mutex_);
+        std::erase_if(pending_edits_, [&](const MaterialEdit& e) { return e.name == name; });
+        pending_edits_.push_back({name, reflectance, emitted_radiance});
+    }
+    wake_.notify_all();
+}
+
 void SolverWorker::cancel() {
     std::lock_guard lock(mutex_);
     if (progress_) progress_->cancel();
@@ -146,7 +188,7 @@ std::size_t SolverWorker::pending_steps() const {
 }
 
 bool SolverWorker::has_work() const {
-    return pending_rebuild_ || pending_colour_mode_ || pending_reset_ ||
+    return pending_rebuild_ || pending_colour_mode_ || pending_reset_ || !pending_edits_.empty() ||
            (can_step_ && (pending_steps_ > 0 || running_));
 }
 
@@ -155,6 +197,7 @@ void SolverWorker::loop() {
         std::optional<PipelineOptions> rebuild_options;
         std::optional<ColourMode> colour_mode;
         std::optional<Reset> reset;
+        std::optional<MaterialEdit> edit;
         {
             std::unique_lock lock(mutex_);
             working_ = false;
@@ -173,6 +216,9 @@ void SolverWorker::loop() {
             } else if (pending_reset_) {
                 reset = pending_reset_;
                 pending_reset_.reset();
+            } else if (!pending_edits_.empty()) {
+                edit = pending_edits_.front();
+                pending_edits_.erase(pending_edits_.begin());
             } else if (pending_steps_ > 0) {
                 --pending_steps_;
             }
@@ -187,6 +233,8 @@ void SolverWorker::loop() {
                     switch_colour_mode(*colour_mode);
                 } else if (reset) {
                     reset_solver(*reset);
+                } else if (edit) {
+                    edit_material(*edit);
                 } else {
                     take_step();
                 }
@@ -360,6 +408,29 @@ void SolverWorker::start_solver(const Reset& reset, bool geometry_changed) {
     if (keep_error_jobs_ == 0) snapshot_.error.clear();
 }
 
+void SolverWorker::edit_material(const MaterialEdit& edit) {
+    if (!pipeline_) return;
+    pipeline_->prepare(progress_.get());
+    solver_ready_ = true;
+    pipeline_->edit_material(edit.name, edit.reflectance, edit.emitted_radiance);
+    // The emitters' direct light at the vertices, and a textured surface's emission, change with it.
+    display_ = pipeline_->build_display(options_.display);
+    step_offset_ = 0;
+    start_bounce_history();
+    add_bounce(pipeline_->solver().display_solution(),
+               direct_light_share(display_, pipeline_->solver().display_solution()));
+    history_residual_.clear();
+    history_unshot_.clear();
+    const bool can_step = !pipeline_->solver().report().finished();
+    set_can_step(can_step);
+    {
+        std::lock_guard lock(mutex_);
+        running_ = can_step;  // live: the light settles to the edit without being asked
+        snapshot_.error.clear();
+    }
+    publish(true, true);
+}
+
 void SolverWorker::take_step() {
     if (!pipeline_ || !solver_ready_) return;
     const std::vector<glm::dvec3> before = pipeline_->solver().display_solution();
@@ -426,6 +497,8 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
         geometry->triangles.assign(first, first + display_.triangles.size() * 3);
         geometry->outline = patch_outline(display_);
         geometry->texcoords = display_.texcoords;
+        geometry->triangle_material =
+            triangle_materials(pipeline_->loaded().scene, pipeline_->patches(), display_);
         geometry->textured = display_.textured;
         geometry->bounds = bounding_box(pipeline_->loaded().scene);
         geometry->scene_camera = scene_camera(pipeline_->loaded().scene);
@@ -464,6 +537,7 @@ void SolverWorker::publish_statistics() {
         statistics.remesh_unavailable = remesh_unavailable_;
         statistics.opened = opened_;
         statistics.warnings = pipeline_->loaded().scene.warnings;
+        statistics.materials = scene_materials(pipeline_->loaded().scene);
         statistics.patches = pipeline_->patches().size();
         statistics.subdivision = std::string(subdivision_name(pipeline_->subdivision()));
         statistics.patch_size = pipeline_->loaded().patch_size;

@@ -44,6 +44,10 @@ class SolverWorker {
     // A fresh solver from B = E (emission only) with this method and tolerance; keeps the form factors.
     void request_reset(const std::string& method, double tolerance);
     void request_colour_mode(ColourMode mode);
+    // Gives the named material this reflectance and emitted radiance Le and runs the solver on from the
+    // solution shown, with the same form factors. Edits of a material not yet made replace each other.
+    void request_material_edit(const std::string& name, const glm::dvec3& reflectance,
+                               const glm::dvec3& emitted_radiance);
     // Stops what runs now (form factors, a run of steps) and drops the steps asked for and not yet taken.
     void cancel();
 
@@ -64,7 +68,14 @@ class SolverWorker {
         bool from_emission;  // B = E whatever --initial says (the panel's reset); else --initial's guess
     };
 
+    struct MaterialEdit {
+        std::string name;
+        glm::dvec3 reflectance;
+        glm::dvec3 emitted_radiance;
+    };
+
     void loop();
+    void edit_material(const MaterialEdit& edit);
     bool has_work() const;  // with mutex_ held
     void rebuild(const PipelineOptions& options);
     // The newly loaded pipeline becomes the one shown; a new scene's is not prepared yet.
@@ -98,6 +109,7 @@ class SolverWorker {
     int keep_error_jobs_ = 0;
     std::optional<Reset> pending_reset_;
     std::optional<ColourMode> pending_colour_mode_;
+    std::vector<MaterialEdit> pending_edits_;
     std::size_t pending_steps_ = 0;
     bool running_ = false;
     bool stop_ = false;

@@ -20,6 +20,7 @@
 #include "rad/display/auto_exposure.hpp"
 #include "rad/io/image_file.hpp"
 #include "viewer/help_overlay.hpp"
+#include "viewer/pick.hpp"
 #include "viewer/window_screenshot.hpp"
 
 namespace rad {
@@ -110,7 +111,8 @@ void Viewer::frame(const Framebuffer& framebuffer, double seconds) {
 
     imgui_.begin_frame();
     PanelRequests requests = panel_.draw(worker_, view_, frames_);
-    handle_window_events(window_.take_events(), requests);
+    const WindowEvents events = window_.take_events();
+    handle_window_events(events, requests);
     if (camera_ && geometry_) {
         camera_input_.orbit = view_.orbit;
         const bool keyboard = !imgui_.wants_keyboard() && glfwGetWindowAttrib(window_.handle(), GLFW_FOCUSED);
@@ -120,6 +122,9 @@ void Viewer::frame(const Framebuffer& framebuffer, double seconds) {
     if (requests.reset_view && camera_) camera_->reset();
 
     const ViewRect view = view_rect(framebuffer, requests.docked_width);
+    if (!imgui_.wants_mouse()) {
+        for (const glm::dvec2& click : events.clicks) pick(click, view);
+    }
     if (requests.show_help) show_help_ = true;
     const ImVec2 window = ImGui::GetIO().DisplaySize;
     draw_help_overlay(show_help_, 0.5f * (requests.docked_width + window.x), 0.5f * window.y);
@@ -229,14 +234,33 @@ void Viewer::draw_scene(const Framebuffer& framebuffer, const ViewRect& view) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!camera_ || !geometry_) return;
     glViewport(view.x, 0, view.width, view.height);
-    const double aspect = double(view.width) / double(view.height);
-    const glm::mat4 projection = view_projection(camera_->camera(), aspect, geometry_->bounds);
+    const glm::mat4 projection = view_projection_of(view);
     if (view_.auto_exposure) meter_exposure(projection, view);
     DrawOptions draw;
     draw.exposure_scale = static_cast<float>(std::exp2(view_.exposure));
     draw.encode_srgb = true;
     draw.outline = view_.outline;
     renderer_.draw(projection, draw);
+}
+
+glm::mat4 Viewer::view_projection_of(const ViewRect& view) const {
+    const double aspect = double(view.width) / double(std::max(view.height, 1));
+    return view_projection(camera_->camera(), aspect, geometry_->bounds);
+}
+
+void Viewer::pick(const glm::dvec2& window_point, const ViewRect& view) {
+    if (!camera_ || !geometry_ || view.width <= 0 || view.height <= 0) return;
+    // Window units to framebuffer pixels (a HiDPI screen has more of them), then to the view's [-1, 1]².
+    const ImVec2 window = ImGui::GetIO().DisplaySize;
+    if (window.x <= 0.0f || window.y <= 0.0f) return;
+    const double x = window_point.x * (view.x + view.width) / window.x - view.x;
+    const double y = window_point.y * view.height / window.y;
+    const glm::dvec2 ndc(2.0 * x / view.width - 1.0, 1.0 - 2.0 * y / view.height);
+    if (std::abs(ndc.x) > 1.0 || std::abs(ndc.y) > 1.0) return;
+    const auto triangle =
+        pick_triangle(geometry_->positions, geometry_->triangles, pick_ray(view_projection_of(view), ndc));
+    if (!triangle || *triangle >= geometry_->triangle_material.size()) return;
+    panel_.select_material(geometry_->triangle_material[*triangle]);
 }
 
 // The meter's image: small, as the geometric mean needs no detail; the window's projection stretched to it

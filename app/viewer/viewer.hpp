@@ -48,12 +48,15 @@ class Viewer {
     // The cumulative solution, or the chosen bounce alone; nullptr (black) when there is none.
     ViewerRadiance::Colours colours_to_show() const;
     void handle_window_events(const WindowEvents& events, PanelRequests& requests);
+    glm::mat4 view_projection_of(const ViewRect& view) const;
     ViewRect view_rect(const Framebuffer& framebuffer, float docked_width) const;
     void draw_scene(const Framebuffer& framebuffer, const ViewRect& view);
     // Auto exposure: the view drawn small in radiance and metered (auto_exposure), again whenever the view
     // or the colours change; leaves the window's framebuffer bound.
     void meter_exposure(const glm::mat4& view_projection, const ViewRect& view);
     std::optional<std::string> save_screenshot(const std::string& path, const ViewRect& view);
+    // A click in the view picks the material of the surface under it for the panel.
+    void pick(const glm::dvec2& window_point, const ViewRect& view);
     // The camera as `render` takes it, to the clipboard, stdout and the panel.
     void copy_camera();
     // Scripted runs: once the worker has taken the steps asked for, writes the screenshot and ends.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -120,6 +121,7 @@ PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const 
             options_.display = display;
             show_options();
         }
+        material_ = -1;  // another scene's materials
         // A scene opened at its default patch size shows what that is (the statistics are the new scene's
         // from here on, not the previous one's).
         if (options_.scene.patch_size <= 0.0) options_.scene.patch_size = snapshot.statistics.patch_size;
@@ -135,6 +137,9 @@ PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const 
     draw_progress(worker);
     if (ImGui::CollapsingHeader("Solver", ImGuiTreeNodeFlags_DefaultOpen)) draw_solver(worker, snapshot);
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) draw_view(worker, view, requests);
+    if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+        draw_material(worker, snapshot.statistics);
+    }
     if (ImGui::CollapsingHeader("Scene and meshing", ImGuiTreeNodeFlags_DefaultOpen)) {
         draw_scene(worker, snapshot.statistics);
     }
@@ -355,6 +360,60 @@ void ViewerPanel::remesh(SolverWorker& worker, const ViewerStatistics& statistic
                                                       : statistics.scene;
     worker.request_rebuild(options_);
     worker.request_steps(1);
+}
+
+void ViewerPanel::select_material(std::uint32_t index) {
+    material_ = static_cast<int>(index);
+    material_loaded_ = false;
+}
+
+void ViewerPanel::draw_material(SolverWorker& worker, const ViewerStatistics& statistics) {
+    const std::vector<ViewerMaterial>& materials = statistics.materials;
+    if (materials.empty()) {
+        ImGui::TextDisabled("no scene yet");
+        return;
+    }
+    if (material_ < 0 || material_ >= static_cast<int>(materials.size())) {
+        material_ = 0;
+        material_loaded_ = false;
+    }
+    std::vector<std::string> names;
+    for (const ViewerMaterial& m : materials) names.push_back(m.name.empty() ? "(unnamed)" : m.name);
+    if (combo("material", material_, names)) material_loaded_ = false;
+    const ViewerMaterial& shown = materials[static_cast<std::size_t>(material_)];
+    if (!material_loaded_) {
+        for (int c = 0; c < 3; ++c) reflectance_[c] = static_cast<float>(shown.reflectance[c]);
+        const double strength =
+            std::max({shown.emitted_radiance.x, shown.emitted_radiance.y, shown.emitted_radiance.z});
+        emission_strength_ = static_cast<float>(strength);
+        for (int c = 0; c < 3; ++c)
+            emission_colour_[c] =
+                strength > 0.0 ? static_cast<float>(shown.emitted_radiance[c] / strength) : 1.0f;
+        material_loaded_ = true;
+    }
+    ImGui::TextDisabled("or click a surface in the view");
+    bool changed = false;
+    ImGui::BeginDisabled(shown.textured);
+    changed |= ImGui::ColorEdit3("reflectance", reflectance_, ImGuiColorEditFlags_Float);
+    ImGui::EndDisabled();
+    if (shown.textured && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Textured: its texels give its reflectance");
+    changed |= ImGui::ColorEdit3("emitted colour", emission_colour_, ImGuiColorEditFlags_Float);
+    changed |=
+        ImGui::DragFloat("emitted radiance", &emission_strength_, 0.05f * std::max(emission_strength_, 1.0f),
+                         0.0f, 1e9f, "%.4g", ImGuiSliderFlags_Logarithmic);
+    for (float& r : reflectance_) r = std::clamp(r, 0.0f, static_cast<float>(kMaxReflectance));
+    emission_strength_ = std::max(emission_strength_, 0.0f);
+    const glm::dvec3 le = double(emission_strength_) *
+                          glm::dvec3(emission_colour_[0], emission_colour_[1], emission_colour_[2]);
+    // π Le over the material's area, in the scene's units of radiosity × area (watts where Le is in W/(m² sr)
+    // and lengths in metres).
+    const double power = std::numbers::pi * (le.x + le.y + le.z) / 3.0 * shown.area;
+    ImGui::TextDisabled("emitted power %.4g (mean of R, G, B), area %.4g", power, shown.area);
+    if (changed) {
+        worker.request_material_edit(shown.name,
+                                     glm::dvec3(reflectance_[0], reflectance_[1], reflectance_[2]), le);
+    }
 }
 
 void ViewerPanel::draw_statistics(const ViewerStatistics& statistics, const FrameTimer& frames) {

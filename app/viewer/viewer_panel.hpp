@@ -37,6 +37,9 @@ class ViewerPanel {
     // Loads another scene with the panel's patch size and form-factor method, or a saved solution
     // (FILE.radiosity) as it was saved (the panel's Open, or a drop).
     void open_scene(SolverWorker& worker, const std::string& path);
+    // The material of a surface clicked in the view, shown for editing (its place in
+    // ViewerStatistics::materials).
+    void select_material(std::uint32_t index);
     // A line shown at the bottom of the panel (where a screenshot went, say).
     void set_message(const std::string& message) { message_ = message; }
 
@@ -52,6 +55,7 @@ class ViewerPanel {
     void draw_bounce_choice(const SolverWorker& worker, ViewSettings& view);
     void draw_scene(SolverWorker& worker, const ViewerStatistics& statistics);
     void draw_statistics(const ViewerStatistics& statistics, const FrameTimer& frames);
+    void draw_material(SolverWorker& worker, const ViewerStatistics& statistics);
 
     PipelineOptions options_;  // the values the panel's controls edit
     int method_index_ = 0;
@@ -59,6 +63,12 @@ class ViewerPanel {
     int subdivision_index_ = 0;  // the position in all_subdivisions()
     std::uint64_t opened_ = 0;   // the worker's ViewerStatistics::opened last seen
     std::string scene_path_;
+    // The material edited: its place in the statistics' list, and the values the controls show.
+    int material_ = -1;
+    bool material_loaded_ = false;  // the controls hold the material's values (not yet those of another)
+    float reflectance_[3] = {0, 0, 0};
+    float emission_colour_[3] = {0, 0, 0};     // Le over its largest channel
+    float emission_strength_ = 0.0f;           // that largest channel
     const Progress* progress_seen_ = nullptr;  // the job whose stage started at stage_start_
     std::uint64_t stage_number_ = 0;
     double stage_start_ = 0.0;
