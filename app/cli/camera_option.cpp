@@ -21,6 +21,16 @@ std::string numbers(const glm::dvec3& v) {
     return text;
 }
 
+std::string camera_numbers(const Camera& camera) {
+    return numbers(camera.eye) + "," + numbers(camera.target) + "," + numbers(camera.up);
+}
+
+std::string fov_text(double fov_degrees) {
+    char fov[32];
+    std::snprintf(fov, sizeof fov, "%.6g", fov_degrees);
+    return fov;
+}
+
 }  // namespace
 
 Camera parse_camera(const std::string& text, const Camera& fallback, const std::string& where) {
@@ -41,10 +51,16 @@ Camera parse_camera(const std::string& text, const Camera& fallback, const std::
 }
 
 std::string camera_option_text(const Camera& camera) {
-    char fov[32];
-    std::snprintf(fov, sizeof fov, "%.6g", camera.fov_degrees);
-    return "--camera " + numbers(camera.eye) + "," + numbers(camera.target) + "," + numbers(camera.up) +
-           " --fov " + fov;
+    return "--camera " + camera_numbers(camera) + " --fov " + fov_text(camera.fov_degrees);
+}
+
+std::string cameras_file_text(const std::vector<Camera>& cameras) {
+    std::string text;
+    if (!cameras.empty()) {
+        text = "# views kept in the viewer; field of view " + fov_text(cameras.front().fov_degrees) + " (--fov)\n";
+    }
+    for (const Camera& camera : cameras) text += camera_numbers(camera) + "\n";
+    return text;
 }
 
 }  // namespace rad

@@ -19,6 +19,8 @@ const std::vector<KeyHelp>& viewer_key_help() {
         {"B", "one bounce alone / all bounces"},
         {"P or F12", "screenshot of the view (PNG in the working folder)"},
         {"C", "copy the camera as render's --camera and --fov options"},
+        {"K", "keep this view (Save, export, views)"},
+        {"1 to 9", "go to a kept view"},
         {"F1", "this help"},
         {"Esc", "quit"},
         {"drop a file", "open a scene or a saved solution"},

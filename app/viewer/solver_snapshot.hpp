@@ -91,6 +91,7 @@ struct SolverSnapshot {
     std::shared_ptr<const ViewerRadiance> radiance;
     ViewerStatistics statistics;
     std::string error;       // the last failure, for the panel; empty when the last job succeeded
+    std::string written;     // "wrote FILE" after the last file the panel asked for
     bool bad_input = false;  // the failure was the user's input (a scene file, an option): exit status 2
 };
 

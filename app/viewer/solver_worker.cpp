@@ -12,6 +12,7 @@
 #include "rad/camera/camera_view.hpp"
 #include "rad/display/display_outline.hpp"
 #include "rad/io/saved_solution.hpp"
+#include "rad/io/scene_export.hpp"
 #include "rad/util/error.hpp"
 
 namespace rad {
@@ -155,6 +156,14 @@ void SolverWorker::request_material_edit(const std::string& name, const glm::dve
     wake_.notify_all();
 }
 
+void SolverWorker::request_write(const std::string& path, double exposure) {
+    {
+        std::lock_guard lock(mutex_);
+        pending_writes_.push_back({path, exposure});
+    }
+    wake_.notify_all();
+}
+
 void SolverWorker::cancel() {
     std::lock_guard lock(mutex_);
     if (progress_) progress_->cancel();
@@ -189,6 +198,7 @@ std::size_t SolverWorker::pending_steps() const {
 
 bool SolverWorker::has_work() const {
     return pending_rebuild_ || pending_colour_mode_ || pending_reset_ || !pending_edits_.empty() ||
+           !pending_writes_.empty() ||
            (can_step_ && (pending_steps_ > 0 || running_));
 }
 
@@ -198,6 +208,7 @@ void SolverWorker::loop() {
         std::optional<ColourMode> colour_mode;
         std::optional<Reset> reset;
         std::optional<MaterialEdit> edit;
+        std::optional<Write> file;
         {
             std::unique_lock lock(mutex_);
             working_ = false;
@@ -219,6 +230,9 @@ void SolverWorker::loop() {
             } else if (!pending_edits_.empty()) {
                 edit = pending_edits_.front();
                 pending_edits_.erase(pending_edits_.begin());
+            } else if (!pending_writes_.empty()) {
+                file = pending_writes_.front();
+                pending_writes_.erase(pending_writes_.begin());
             } else if (pending_steps_ > 0) {
                 --pending_steps_;
             }
@@ -235,6 +249,8 @@ void SolverWorker::loop() {
                     reset_solver(*reset);
                 } else if (edit) {
                     edit_material(*edit);
+                } else if (file) {
+                    write(*file);
                 } else {
                     take_step();
                 }
@@ -431,6 +447,43 @@ void SolverWorker::edit_material(const MaterialEdit& edit) {
     publish(true, true);
 }
 
+void SolverWorker::write(const Write& file) {
+    if (!pipeline_) return;
+    std::string error;
+    try {
+        if (is_saved_solution_path(file.path)) {
+            if (!solver_ready_) throw InputError(file.path + ": nothing to save before the form factors are known");
+            write_saved_solution(file.path, pipeline_->saved_solution());
+        } else if (!export_format(file.path)) {
+            throw InputError(file.path + ": save as .radiosity, or export as .ply, .gltf or .glb");
+        } else {
+            const std::vector<glm::dvec3> radiosity = shown_radiosity();
+            export_scene(file.path, display_, vertex_radiance(display_, radiosity, shown_direct_share()),
+                         ExportOptions{.exposure = file.exposure});
+        }
+    } catch (const InputError& e) {
+        error = input_error_message(e);
+    } catch (const std::exception& e) {
+        error = file.path + ": " + e.what();
+    }
+    std::lock_guard lock(mutex_);
+    snapshot_.written = error.empty() ? "wrote " + file.path : std::string();
+    if (!error.empty()) snapshot_.error = error;
+}
+
+std::vector<glm::dvec3> SolverWorker::shown_radiosity() const {
+    // Before the transport is rebuilt: the saved state. While form factors run: the emission, and the
+    // emitters' direct light at the vertices once it is traced.
+    if (const SavedSolution* saved = pipeline_->saved()) return saved->display_solution;
+    if (!solver_ready_) return pipeline_->preview_radiosity();
+    return pipeline_->solver().display_solution();
+}
+
+std::optional<double> SolverWorker::shown_direct_share() const {
+    if (!pipeline_->saved() && !solver_ready_) return 1.0;
+    return std::nullopt;
+}
+
 void SolverWorker::take_step() {
     if (!pipeline_ || !solver_ready_) return;
     const std::vector<glm::dvec3> before = pipeline_->solver().display_solution();
@@ -507,15 +560,11 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
     std::shared_ptr<ViewerRadiance> radiance;
     if (with_radiance) {
         radiance = std::make_shared<ViewerRadiance>();
+        radiance->cumulative = vertex_radiance(display_, shown_radiosity(), shown_direct_share());
         if (const SavedSolution* saved = pipeline_->saved()) {
             // Before the transport is rebuilt: the saved state, with no bounce history.
-            radiance->cumulative = vertex_radiance(display_, saved->display_solution);
             radiance->step = saved->report.steps;
-        } else if (!solver_ready_) {
-            // While form factors run: the emission, and the emitters' direct light once it is traced.
-            radiance->cumulative = vertex_radiance(display_, pipeline_->preview_radiosity(), 1.0);
-        } else {
-            radiance->cumulative = vertex_radiance(display_, pipeline_->solver().display_solution());
+        } else if (solver_ready_) {
             radiance->bounces.assign(vertex_bounces_.begin(), vertex_bounces_.end());
             radiance->first_bounce = step_offset_ + first_bounce_;
             radiance->step = step_offset_ + pipeline_->solver().report().step;

@@ -48,6 +48,10 @@ class SolverWorker {
     // solution shown, with the same form factors. Edits of a material not yet made replace each other.
     void request_material_edit(const std::string& name, const glm::dvec3& reflectance,
                                const glm::dvec3& emitted_radiance);
+    // Writes the solution shown: FILE.radiosity (the solve-once format, after the form factors), or the
+    // display mesh with its colours at this exposure (.ply, .gltf, .glb). The panel shows "wrote FILE", or
+    // the error.
+    void request_write(const std::string& path, double exposure);
     // Stops what runs now (form factors, a run of steps) and drops the steps asked for and not yet taken.
     void cancel();
 
@@ -74,8 +78,14 @@ class SolverWorker {
         glm::dvec3 emitted_radiance;
     };
 
+    struct Write {
+        std::string path;
+        double exposure;
+    };
+
     void loop();
     void edit_material(const MaterialEdit& edit);
+    void write(const Write& write);
     bool has_work() const;  // with mutex_ held
     void rebuild(const PipelineOptions& options);
     // The newly loaded pipeline becomes the one shown; a new scene's is not prepared yet.
@@ -95,6 +105,10 @@ class SolverWorker {
     // thread.
     void publish(bool geometry_changed, bool with_radiance);
     void publish_statistics();
+    // The radiosity drawn now (the saved, the preview's, or the solver's) and the direct share it is drawn
+    // with.
+    std::vector<glm::dvec3> shown_radiosity() const;
+    std::optional<double> shown_direct_share() const;
     void fail(const std::string& message, bool bad_input = false);
     void changed();  // without mutex_ held
 
@@ -110,6 +124,7 @@ class SolverWorker {
     std::optional<Reset> pending_reset_;
     std::optional<ColourMode> pending_colour_mode_;
     std::vector<MaterialEdit> pending_edits_;
+    std::vector<Write> pending_writes_;
     std::size_t pending_steps_ = 0;
     bool running_ = false;
     bool stop_ = false;

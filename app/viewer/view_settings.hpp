@@ -1,8 +1,10 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "rad/display/display_mesh.hpp"
+#include "rad/scene/scene.hpp"
 
 namespace rad {
 
@@ -16,6 +18,8 @@ struct ViewSettings {
     std::size_t bounce = 0;
     ColourMode mode = ColourMode::smooth;
     bool orbit = false;
+    // Views kept for coming back to (keys 1 to 9), and written as a cameras file `render --cameras` takes.
+    std::vector<Camera> bookmarks;
 };
 
 }  // namespace rad

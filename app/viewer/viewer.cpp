@@ -120,6 +120,8 @@ void Viewer::frame(const Framebuffer& framebuffer, double seconds) {
                              !imgui_.wants_mouse());
     }
     if (requests.reset_view && camera_) camera_->reset();
+    if (requests.add_bookmark && camera_) view_.bookmarks.push_back(camera_->camera());
+    if (requests.go_to_bookmark) go_to_bookmark(*requests.go_to_bookmark);
 
     const ViewRect view = view_rect(framebuffer, requests.docked_width);
     if (!imgui_.wants_mouse()) {
@@ -205,10 +207,15 @@ void Viewer::handle_window_events(const WindowEvents& events, PanelRequests& req
             case GLFW_KEY_F1:
                 show_help_ = !show_help_;
                 break;
+            case GLFW_KEY_K:
+                requests.add_bookmark = true;
+                break;
             case GLFW_KEY_ESCAPE:
                 window_.request_close();
                 break;
             default:
+                if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9)
+                    requests.go_to_bookmark = static_cast<std::size_t>(key - GLFW_KEY_1);
                 break;
         }
     }
@@ -285,6 +292,11 @@ void Viewer::meter_exposure(const glm::mat4& view_projection, const ViewRect& vi
     metered_colours_ = renderer_.colour_uploads();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(view.x, 0, view.width, view.height);
+}
+
+void Viewer::go_to_bookmark(std::size_t index) {
+    if (!camera_ || index >= view_.bookmarks.size()) return;
+    camera_->go_to(view_.bookmarks[index]);
 }
 
 void Viewer::copy_camera() {

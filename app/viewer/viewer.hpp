@@ -57,6 +57,7 @@ class Viewer {
     std::optional<std::string> save_screenshot(const std::string& path, const ViewRect& view);
     // A click in the view picks the material of the surface under it for the panel.
     void pick(const glm::dvec2& window_point, const ViewRect& view);
+    void go_to_bookmark(std::size_t index);
     // The camera as `render` takes it, to the clipboard, stdout and the panel.
     void copy_camera();
     // Scripted runs: once the worker has taken the steps asked for, writes the screenshot and ends.

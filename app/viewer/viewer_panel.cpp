@@ -4,13 +4,16 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "cli/camera_option.hpp"
 #include "cli/progress_bar.hpp"
+#include "rad/io/atomic_file.hpp"
 #include "rad/io/saved_solution.hpp"
 #include "viewer/log_plot.hpp"
 #include "viewer/panel_text.hpp"
@@ -52,6 +55,13 @@ bool combo(const char* label, int& index, const std::vector<std::string>& names)
         ImGui::EndCombo();
     }
     return changed;
+}
+
+// What Save and Export are named after: the scene's file name without its folder or extension
+// (builtin:cornell gives cornell).
+std::string default_save_stem(const std::string& scene) {
+    const std::string name = scene.starts_with("builtin:") ? scene.substr(8) : std::filesystem::path(scene).stem().string();
+    return name.empty() ? std::string("radiosity") : name;
 }
 
 // A third of the window, within what the panel's widths need and leaving the view at least half.
@@ -143,6 +153,9 @@ PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const 
     if (ImGui::CollapsingHeader("Scene and meshing", ImGuiTreeNodeFlags_DefaultOpen)) {
         draw_scene(worker, snapshot.statistics);
     }
+    if (ImGui::CollapsingHeader("Save, export, views", ImGuiTreeNodeFlags_DefaultOpen)) {
+        draw_files(worker, view, requests);
+    }
     if (ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
         draw_statistics(snapshot.statistics, frames);
     }
@@ -157,6 +170,7 @@ PanelRequests ViewerPanel::draw(SolverWorker& worker, ViewSettings& view, const 
         ImGui::TextWrapped("%s", panel_text(snapshot.error).c_str());
         ImGui::PopStyleColor();
     }
+    if (!snapshot.written.empty()) ImGui::TextWrapped("%s", panel_text(snapshot.written).c_str());
     if (!message_.empty()) ImGui::TextWrapped("%s", panel_text(message_).c_str());
     ImGui::End();
     return requests;
@@ -413,6 +427,40 @@ void ViewerPanel::draw_material(SolverWorker& worker, const ViewerStatistics& st
     if (changed) {
         worker.request_material_edit(shown.name,
                                      glm::dvec3(reflectance_[0], reflectance_[1], reflectance_[2]), le);
+    }
+}
+
+void ViewerPanel::draw_files(SolverWorker& worker, const ViewSettings& view, PanelRequests& requests) {
+    if (save_stem_.empty()) save_stem_ = default_save_stem(scene_path_);
+    ImGui::InputText("file", &save_stem_);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Written in the working folder unless a folder is given; no extension");
+    const auto write = [&](const char* extension) { worker.request_write(save_stem_ + extension, view.exposure); };
+    if (ImGui::Button("Save .radiosity")) write(".radiosity");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The solution, for render and view to open without solving again");
+    ImGui::SameLine();
+    if (ImGui::Button("Export .ply")) write(".ply");
+    ImGui::SameLine();
+    if (ImGui::Button("Export .glb")) write(".glb");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The mesh drawn with its colours, at the exposure shown");
+    if (ImGui::Button("Keep this view")) requests.add_bookmark = true;
+    for (std::size_t i = 0; i < view.bookmarks.size(); ++i) {
+        ImGui::SameLine();
+        ImGui::PushID(static_cast<int>(i));
+        if (ImGui::SmallButton(std::to_string(i + 1).c_str())) requests.go_to_bookmark = i;
+        ImGui::PopID();
+    }
+    if (!view.bookmarks.empty()) {
+        if (ImGui::Button("Write the views as .cameras")) write_cameras(save_stem_ + ".cameras", view.bookmarks);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("One camera per line, for render --cameras FILE");
+    }
+}
+
+void ViewerPanel::write_cameras(const std::string& path, const std::vector<Camera>& cameras) {
+    try {
+        write_file_atomically(path, cameras_file_text(cameras));
+        message_ = "wrote " + path + " (render --cameras " + path + ")";
+    } catch (const std::exception& e) {
+        message_ = path + ": " + e.what();
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "pipeline/radiosity_pipeline.hpp"
@@ -16,6 +17,8 @@ struct PanelRequests {
     bool reset_view = false;
     bool copy_camera = false;
     bool show_help = false;
+    bool add_bookmark = false;                // keep the view as it is now
+    std::optional<std::size_t> go_to_bookmark;  // ViewSettings::bookmarks' index
     // The width the panel takes at the window's left edge, in Dear ImGui's units (the window's, not its
     // framebuffer's); 0 while it is collapsed to its title bar. The 3D view is drawn beside it.
     float docked_width = 0.0f;
@@ -56,6 +59,8 @@ class ViewerPanel {
     void draw_scene(SolverWorker& worker, const ViewerStatistics& statistics);
     void draw_statistics(const ViewerStatistics& statistics, const FrameTimer& frames);
     void draw_material(SolverWorker& worker, const ViewerStatistics& statistics);
+    void draw_files(SolverWorker& worker, const ViewSettings& view, PanelRequests& requests);
+    void write_cameras(const std::string& path, const std::vector<Camera>& cameras);
 
     PipelineOptions options_;  // the values the panel's controls edit
     int method_index_ = 0;
@@ -63,6 +68,7 @@ class ViewerPanel {
     int subdivision_index_ = 0;  // the position in all_subdivisions()
     std::uint64_t opened_ = 0;   // the worker's ViewerStatistics::opened last seen
     std::string scene_path_;
+    std::string save_stem_;  // what Save and Export write, without the extension
     // The material edited: its place in the statistics' list, and the values the controls show.
     int material_ = -1;
     bool material_loaded_ = false;  // the controls hold the material's values (not yet those of another)

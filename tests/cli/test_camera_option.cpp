@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/camera_option.hpp"
 
@@ -30,6 +31,27 @@ TEST(CameraOption, TheCopiedTextReadsBackAsTheSameCamera) {
     EXPECT_LT(glm::length(back.target - camera.target), 1e-6 * size) << text;
     EXPECT_LT(glm::length(back.up - camera.up), 1e-6) << text;
     EXPECT_NEAR(fov, camera.fov_degrees, 1e-4) << text;
+}
+
+TEST(CameraOption, TheViewsFileHoldsOneCameraPerLineAsRenderReadsThem) {
+    Camera a, b;
+    a.eye = {1, 2, 3};
+    a.target = {1, 2, 2};
+    b.eye = {-4.5, 0.25, 7};
+    b.target = {0, 0, 0};
+    b.up = {0, 0, 1};
+    const std::string text = cameras_file_text({a, b});
+    std::istringstream lines(text);
+    std::string line;
+    std::vector<Camera> read;
+    while (std::getline(lines, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        read.push_back(parse_camera(line, Camera{}, "views"));
+    }
+    ASSERT_EQ(read.size(), 2u) << text;
+    EXPECT_LT(glm::length(read[0].target - a.target), 1e-9);
+    EXPECT_LT(glm::length(read[1].eye - b.eye), 1e-9);
+    EXPECT_LT(glm::length(read[1].up - b.up), 1e-9);
 }
 
 }  // namespace

@@ -61,5 +61,16 @@ TEST(FlyCamera, ScrollChangesSpeedAndOrbitKeepsDistance) {
     expect_near(camera.forward(), glm::normalize(centre - camera.camera().eye), 1e-9);
 }
 
+TEST(FlyCamera, AKeptViewIsWhereGoingToItReturns) {
+    FlyCamera camera(kStart, 1.0);
+    camera.move({1, 1, 0}, 2.0);
+    camera.look(120.0, -40.0);
+    const Camera kept = camera.camera();
+    camera.reset();
+    camera.go_to(kept);
+    expect_near(camera.camera().eye, kept.eye, 1e-12);
+    expect_near(camera.forward(), glm::normalize(kept.target - kept.eye), 1e-12);
+}
+
 }  // namespace
 }  // namespace rad

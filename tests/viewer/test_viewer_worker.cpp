@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <thread>
 
@@ -452,6 +453,32 @@ TEST(ViewerWorker, ABadSavedSolutionLeavesThePreviousSceneShown) {
     ASSERT_TRUE(stepped.radiance);
     EXPECT_EQ(stepped.radiance->step, 3u);
     expect_near(stepped.radiance->cumulative, radiance_after(options, 3));
+}
+
+// Files written from the window: the solution (read back at its step), the mesh with its colours, and a
+// name of no known kind refused with the file named; nothing of the solution changes.
+TEST(ViewerWorker, SavesTheSolutionAndExportsTheMeshShown) {
+    const test::TempDir folder;
+    SolverWorker worker(cornell(100.0));
+    worker.request_steps(3);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const std::string saved = (folder.path() / "cornell.radiosity").string();
+    const std::string mesh = (folder.path() / "cornell.ply").string();
+    worker.request_write(saved, 0.0);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(60)));
+    EXPECT_EQ(worker.snapshot().written, "wrote " + saved);
+    EXPECT_EQ(read_saved_solution(saved).report.steps, 3u);
+    worker.request_write(mesh, 0.0);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(60)));
+    EXPECT_EQ(worker.snapshot().written, "wrote " + mesh);
+    EXPECT_GT(std::filesystem::file_size(mesh), 1000u);
+    const std::string unknown = (folder.path() / "cornell.txt").string();
+    worker.request_write(unknown, 0.0);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(60)));
+    EXPECT_NE(worker.snapshot().error.find("cornell.txt"), std::string::npos) << worker.snapshot().error;
+    EXPECT_FALSE(std::filesystem::exists(unknown));
+    ASSERT_TRUE(worker.snapshot().radiance);
+    EXPECT_EQ(worker.snapshot().radiance->step, 3u);
 }
 
 }  // namespace

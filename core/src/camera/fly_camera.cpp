@@ -81,6 +81,11 @@ void FlyCamera::reset() {
     set_direction(start_.target - start_.eye);
 }
 
+void FlyCamera::go_to(const Camera& view) {
+    eye_ = view.eye;
+    set_direction(view.target - view.eye);
+}
+
 Camera FlyCamera::camera() const {
     Camera c;
     c.eye = eye_;

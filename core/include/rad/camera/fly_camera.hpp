@@ -29,6 +29,9 @@ class FlyCamera {
     // Turns around `centre` by the mouse's travel, keeping the distance, and looks at it.
     void orbit(const glm::dvec3& centre, double dx_pixels, double dy_pixels);
     void reset();
+    // Stands at a view's eye, looking at its target (a view camera() gave: the same up, speed and field of
+    // view).
+    void go_to(const Camera& view);
 
     Camera camera() const;
     double speed() const { return speed_; }
