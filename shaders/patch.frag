@@ -14,6 +14,13 @@ uniform bool textured;
 uniform sampler2D albedo_texture;
 uniform vec3 albedo_scale;
 uniform vec3 emitted_radiance;
+// The false-colour view (rad/display/false_colour.hpp): luminance efficacy · Y(L) in cd/m², its log10 mapped
+// from false_low to false_high onto the stops, evenly spaced.
+uniform bool false_colour;
+uniform float false_efficacy;
+uniform float false_low;
+uniform float false_high;
+uniform vec3 false_stops[6];
 
 out vec4 colour;
 
@@ -27,5 +34,12 @@ void main() {
     if (textured)
         radiance = emitted_radiance + albedo_scale * texture(albedo_texture, vertex_texcoord).rgb * radiance;
     vec3 value = radiance * exposure_scale;
+    if (false_colour) {
+        float luminance = false_efficacy * dot(radiance, vec3(0.2126, 0.7152, 0.0722));
+        float t = clamp((log(max(luminance, 1e-30)) / log(10.0) - false_low) / (false_high - false_low), 0.0, 1.0);
+        float x = t * 5.0;
+        int i = min(int(floor(x)), 4);
+        value = mix(false_stops[i], false_stops[i + 1], x - float(i));
+    }
     colour = vec4(encode_srgb ? srgb_encode(value) : value, 1.0);
 }

@@ -148,6 +148,7 @@ void Renderer::draw(const glm::mat4& view_projection, const DrawOptions& options
                        glm::value_ptr(view_projection));
     glUniform1f(patch_program_.uniform("exposure_scale"), options.exposure_scale);
     glUniform1i(patch_program_.uniform("encode_srgb"), options.encode_srgb ? 1 : 0);
+    set_false_colour(options.false_colour);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[kTriangles]);
     // Push the patches back a little so their outline wins the depth test.
     glEnable(GL_POLYGON_OFFSET_FILL);
@@ -165,6 +166,16 @@ void Renderer::draw(const glm::mat4& view_projection, const DrawOptions& options
         glDrawElements(GL_LINES, static_cast<GLsizei>(outline_index_count_), GL_UNSIGNED_INT, nullptr);
     }
     glBindVertexArray(0);
+}
+
+void Renderer::set_false_colour(const std::optional<FalseColourScale>& scale) const {
+    glUniform1i(patch_program_.uniform("false_colour"), scale ? 1 : 0);
+    if (!scale) return;
+    glUniform1f(patch_program_.uniform("false_efficacy"), static_cast<float>(kLuminousEfficacy));
+    glUniform1f(patch_program_.uniform("false_low"), static_cast<float>(scale->log10_low));
+    glUniform1f(patch_program_.uniform("false_high"), static_cast<float>(scale->log10_high));
+    glUniform3fv(patch_program_.uniform("false_stops"), kFalseColourStops,
+                 glm::value_ptr(false_colour_stops().front()));
 }
 
 void Renderer::draw_patches() const {

@@ -8,11 +8,13 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <map>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "gl/shader_program.hpp"
 #include "rad/display/display_mesh.hpp"
+#include "rad/display/false_colour.hpp"
 
 namespace rad {
 
@@ -24,6 +26,8 @@ struct DrawOptions {
     bool outline = false;  // draw patch edges over the patches
     glm::vec3 outline_colour{0.0f};
     glm::vec3 background{0.0f};
+    // Luminance in false colours over this scale instead of the radiance (rad/display/false_colour.hpp).
+    std::optional<FalseColourScale> false_colour;
 };
 
 // The one OpenGL renderer, for the window and for headless images alike: it draws whatever framebuffer is
@@ -62,6 +66,7 @@ class Renderer {
     GLuint texture_of(const std::shared_ptr<const Texture>& texture);
     void release_textures();
     void draw_patches() const;
+    void set_false_colour(const std::optional<FalseColourScale>& scale) const;
 
     std::vector<DrawnRange> ranges_;  // covering every triangle, in order
     std::map<const Texture*, GLuint> textures_;

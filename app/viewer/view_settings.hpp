@@ -18,6 +18,9 @@ struct ViewSettings {
     std::size_t bounce = 0;
     ColourMode mode = ColourMode::smooth;
     bool orbit = false;
+    // Luminance in false colours with a legend, over this many decades around the view's log-average.
+    bool false_colour = false;
+    int false_colour_decades = 4;
     // Views kept for coming back to (keys 1 to 9), and written as a cameras file `render --cameras` takes.
     std::vector<Camera> bookmarks;
 };

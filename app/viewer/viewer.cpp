@@ -19,6 +19,7 @@
 #include "rad/camera/camera_view.hpp"
 #include "rad/display/auto_exposure.hpp"
 #include "rad/io/image_file.hpp"
+#include "viewer/false_colour_legend.hpp"
 #include "viewer/help_overlay.hpp"
 #include "viewer/pick.hpp"
 #include "viewer/window_screenshot.hpp"
@@ -131,6 +132,8 @@ void Viewer::frame(const Framebuffer& framebuffer, double seconds) {
     const ImVec2 window = ImGui::GetIO().DisplaySize;
     draw_help_overlay(show_help_, 0.5f * (requests.docked_width + window.x), 0.5f * window.y);
     if (requests.copy_camera) copy_camera();
+    if (view_.false_colour && geometry_)
+        draw_false_colour_legend(false_colour_scale_shown(), window.x - 10.0f, 10.0f);
     draw_scene(framebuffer, view);
     if (requests.screenshot) {
         if (const auto written = save_screenshot(timestamped_screenshot_path(), view)) {
@@ -247,7 +250,14 @@ void Viewer::draw_scene(const Framebuffer& framebuffer, const ViewRect& view) {
     draw.exposure_scale = static_cast<float>(std::exp2(view_.exposure));
     draw.encode_srgb = true;
     draw.outline = view_.outline;
+    if (view_.false_colour) draw.false_colour = false_colour_scale_shown();
     renderer_.draw(projection, draw);
+}
+
+FalseColourScale Viewer::false_colour_scale_shown() const {
+    // The exposure maps the view's log-average luminance Y to the key, 0.18: Y = 0.18 / 2^exposure.
+    const double mean = kLuminousEfficacy * kAutoExposureKey * std::exp2(-view_.exposure);
+    return false_colour_scale(mean, view_.false_colour_decades);
 }
 
 glm::mat4 Viewer::view_projection_of(const ViewRect& view) const {

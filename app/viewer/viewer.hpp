@@ -49,6 +49,8 @@ class Viewer {
     ViewerRadiance::Colours colours_to_show() const;
     void handle_window_events(const WindowEvents& events, PanelRequests& requests);
     glm::mat4 view_projection_of(const ViewRect& view) const;
+    // Around the view's log-average luminance, which the exposure holds (metered, or as set).
+    FalseColourScale false_colour_scale_shown() const;
     ViewRect view_rect(const Framebuffer& framebuffer, float docked_width) const;
     void draw_scene(const Framebuffer& framebuffer, const ViewRect& view);
     // Auto exposure: the view drawn small in radiance and metered (auto_exposure), again whenever the view

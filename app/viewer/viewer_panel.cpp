@@ -4,8 +4,8 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -60,7 +60,8 @@ bool combo(const char* label, int& index, const std::vector<std::string>& names)
 // What Save and Export are named after: the scene's file name without its folder or extension
 // (builtin:cornell gives cornell).
 std::string default_save_stem(const std::string& scene) {
-    const std::string name = scene.starts_with("builtin:") ? scene.substr(8) : std::filesystem::path(scene).stem().string();
+    const std::string name =
+        scene.starts_with("builtin:") ? scene.substr(8) : std::filesystem::path(scene).stem().string();
     return name.empty() ? std::string("radiosity") : name;
 }
 
@@ -279,6 +280,14 @@ void ViewerPanel::draw_view(SolverWorker& worker, ViewSettings& view, PanelReque
     }
     ImGui::SameLine();
     ImGui::Checkbox("outline", &view.outline);
+    ImGui::Checkbox("false colour", &view.false_colour);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Luminance in cd/m2 (Ke read as W/(m2 sr), 683 lm/W), around the view's mean");
+    if (view.false_colour) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);
+        ImGui::SliderInt("decades", &view.false_colour_decades, 1, 8);
+    }
     ImGui::Checkbox("orbit (Tab)", &view.orbit);
     ImGui::SameLine();
     if (ImGui::Button("Reset view (R)")) requests.reset_view = true;
@@ -433,10 +442,14 @@ void ViewerPanel::draw_material(SolverWorker& worker, const ViewerStatistics& st
 void ViewerPanel::draw_files(SolverWorker& worker, const ViewSettings& view, PanelRequests& requests) {
     if (save_stem_.empty()) save_stem_ = default_save_stem(scene_path_);
     ImGui::InputText("file", &save_stem_);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Written in the working folder unless a folder is given; no extension");
-    const auto write = [&](const char* extension) { worker.request_write(save_stem_ + extension, view.exposure); };
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Written in the working folder unless a folder is given; no extension");
+    const auto write = [&](const char* extension) {
+        worker.request_write(save_stem_ + extension, view.exposure);
+    };
     if (ImGui::Button("Save .radiosity")) write(".radiosity");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The solution, for render and view to open without solving again");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The solution, for render and view to open without solving again");
     ImGui::SameLine();
     if (ImGui::Button("Export .ply")) write(".ply");
     ImGui::SameLine();
@@ -450,7 +463,8 @@ void ViewerPanel::draw_files(SolverWorker& worker, const ViewSettings& view, Pan
         ImGui::PopID();
     }
     if (!view.bookmarks.empty()) {
-        if (ImGui::Button("Write the views as .cameras")) write_cameras(save_stem_ + ".cameras", view.bookmarks);
+        if (ImGui::Button("Write the views as .cameras"))
+            write_cameras(save_stem_ + ".cameras", view.bookmarks);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("One camera per line, for render --cameras FILE");
     }
 }

@@ -1,6 +1,7 @@
 // The OpenGL renderer on a headless context: what it draws is what it was given, at the right place.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/headless_context.hpp"
@@ -60,6 +61,29 @@ TEST_F(RendererTest, DisplayFormatHoldsThePngsSrgbCodes) {
     target.bind();
     renderer.draw(front_view(), {});
     EXPECT_EQ(target.read_pixels()[32 * 64 + 32], colour);
+}
+
+// The false-colour view: a radiance of luminance 683 · Y cd/m² at 10^1.5 on a scale from 10^0 to 10^4 is
+// three eighths up the map; the colours between the stops are interpolated alike in the shader and on the
+// CPU (the legend's), and a luminance past either end takes the end's colour.
+TEST_F(RendererTest, FalseColoursShowTheLuminanceOnTheLegendsScale) {
+    renderer.upload_geometry(kSquare, kTriangles, kOutline);
+    const double luminance = std::pow(10.0, 1.5);
+    const float grey = static_cast<float>(luminance / kLuminousEfficacy);  // Y of a grey is its value
+    DrawOptions options;
+    options.false_colour = FalseColourScale{0.0, 4.0};
+    const auto shown = [&](float radiance) {
+        renderer.update_colours(std::vector<glm::vec3>(4, glm::vec3(radiance)));
+        target.bind();
+        renderer.draw(front_view(), options);
+        return target.read_pixels()[32 * 64 + 32];
+    };
+    const auto expect_near = [](const glm::vec3& actual, const glm::vec3& expected, const char* what) {
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(actual[c], expected[c], 1e-3f) << what << ", channel " << c;
+    };
+    expect_near(shown(grey), false_colour(1.5 / 4.0), "10^1.5");
+    expect_near(shown(1e6f), false_colour_stops().back(), "above the scale");
+    expect_near(shown(1e-9f), false_colour_stops().front(), "below the scale");
 }
 
 TEST_F(RendererTest, BackFacesAreNotDrawn) {
