@@ -4,10 +4,11 @@
 #include <string>
 
 #include "pipeline/form_factor_options.hpp"
+#include "pipeline/outside_light_options.hpp"
 #include "rad/display/vertex_direct_light.hpp"
 #include "rad/mesh/patch_albedo.hpp"
 #include "rad/ray/ray_scene.hpp"
-#include "rad/transport/material_update.hpp"
+#include "rad/transport/source_update.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
 
@@ -53,6 +54,8 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
     }
     seconds_.mesh = clock.seconds();
     solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
+    opened_sky_ = loaded_.scene.sky;
+    opened_sun_ = loaded_.scene.sun;
 }
 
 void RadiosityPipeline::choose_automatic_subdivision() {
@@ -110,6 +113,8 @@ RadiosityPipeline::RadiosityPipeline(SavedSolution saved, const std::string& pat
     }
     loaded_.scene = std::move(saved.scene);
     loaded_.patch_size = s.patch_size;
+    opened_sky_ = loaded_.scene.sky;
+    opened_sun_ = loaded_.scene.sun;
     // The base patches are made again only when the transport is rebuilt.
     saved.scene = Scene{};
     saved_ = std::move(saved);
@@ -254,6 +259,33 @@ void RadiosityPipeline::edit_material(const std::string& name, const glm::dvec3&
         surface->material.emission = material.emission;
     }
     update_element_materials(*built_.transport, patches(), loaded_.scene);
+    restart_from_solution();
+}
+
+void RadiosityPipeline::edit_outside_light(const std::string& sky, const std::string& sun,
+                                           Progress* progress) {
+    prepare();
+    // Read first, so a bad value changes nothing.
+    const Sky new_sky = sky.empty() ? opened_sky_ : parse_sky(sky);
+    const Sun new_sun = sun.empty() ? opened_sun_ : parse_sun(sun);
+    Scene& scene = loaded_.scene;
+    const Sky old_sky = scene.sky;
+    const Sun old_sun = scene.sun;
+    scene.sky = new_sky;
+    scene.sun = new_sun;
+    try {
+        update_outside_light(*built_.transport, patches(), scene, options_.form_factors.seed, progress);
+    } catch (...) {
+        scene.sky = old_sky;
+        scene.sun = old_sun;
+        throw;
+    }
+    options_.scene.sky = sky;
+    options_.scene.sun = sun;
+    restart_from_solution();
+}
+
+void RadiosityPipeline::restart_from_solution() {
     // The light as it stands is where the new solution starts: a small edit converges in a few steps.
     SolverOptions options = solver_options_;
     options.initial = InitialGuess::given;

@@ -83,6 +83,13 @@ class RadiosityPipeline {
     void edit_material(const std::string& name, const glm::dvec3& reflectance,
                        const glm::dvec3& emitted_radiance);
 
+    // The viewer's edit of the light from outside: `sky` and `sun` as --sky and --sun take them (empty: as
+    // the scene was opened). The sky's and sun's light on each element is measured again (rays, not form
+    // factors); the solver starts again from the solution as it stands. After prepare. Throws InputError
+    // naming --sky or --sun for a bad value, and Cancelled when `progress` is cancelled (nothing changes
+    // then).
+    void edit_outside_light(const std::string& sky, const std::string& sun, Progress* progress = nullptr);
+
     const LoadedScene& loaded() const { return loaded_; }
     // The patches the solution belongs to: the meshed scene's, or after prepare the adaptive or
     // hierarchical leaves.
@@ -134,6 +141,9 @@ class RadiosityPipeline {
     // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
     std::vector<glm::dvec3> element_direct() const;
     void continue_saved();
+    // A fresh solver of the same method and options from the solution as it stands, after an edit of the
+    // transport's sources.
+    void restart_from_solution();
     // --subdivision auto: uniform patches or clustering by the scene's faces, then the uniform mesh's size
     // (choose_subdivision), and the patches that subdivision is meshed with.
     void choose_automatic_subdivision();
@@ -143,6 +153,8 @@ class RadiosityPipeline {
     std::string saved_path_;
     Subdivision subdivision_ = Subdivision::uniform;
     LoadedScene loaded_;
+    Sky opened_sky_;  // the scene's sky and sun as opened, which an empty edit returns to
+    Sun opened_sun_;
     SceneTransport built_;
     mutable std::optional<DisplayMesh> display_;  // of patches(), once asked for
     mutable std::vector<glm::dvec3>

@@ -156,6 +156,14 @@ void SolverWorker::request_material_edit(const std::string& name, const glm::dve
     wake_.notify_all();
 }
 
+void SolverWorker::request_outside_light(const std::string& sky, const std::string& sun) {
+    {
+        std::lock_guard lock(mutex_);
+        pending_outside_ = std::make_pair(sky, sun);
+    }
+    wake_.notify_all();
+}
+
 void SolverWorker::request_write(const std::string& path, double exposure) {
     {
         std::lock_guard lock(mutex_);
@@ -198,8 +206,7 @@ std::size_t SolverWorker::pending_steps() const {
 
 bool SolverWorker::has_work() const {
     return pending_rebuild_ || pending_colour_mode_ || pending_reset_ || !pending_edits_.empty() ||
-           !pending_writes_.empty() ||
-           (can_step_ && (pending_steps_ > 0 || running_));
+           pending_outside_ || !pending_writes_.empty() || (can_step_ && (pending_steps_ > 0 || running_));
 }
 
 void SolverWorker::loop() {
@@ -209,6 +216,7 @@ void SolverWorker::loop() {
         std::optional<Reset> reset;
         std::optional<MaterialEdit> edit;
         std::optional<Write> file;
+        std::optional<std::pair<std::string, std::string>> outside;
         {
             std::unique_lock lock(mutex_);
             working_ = false;
@@ -230,6 +238,9 @@ void SolverWorker::loop() {
             } else if (!pending_edits_.empty()) {
                 edit = pending_edits_.front();
                 pending_edits_.erase(pending_edits_.begin());
+            } else if (pending_outside_) {
+                outside = std::move(pending_outside_);
+                pending_outside_.reset();
             } else if (!pending_writes_.empty()) {
                 file = pending_writes_.front();
                 pending_writes_.erase(pending_writes_.begin());
@@ -249,6 +260,8 @@ void SolverWorker::loop() {
                     reset_solver(*reset);
                 } else if (edit) {
                     edit_material(*edit);
+                } else if (outside) {
+                    edit_outside_light(*outside);
                 } else if (file) {
                     write(*file);
                 } else {
@@ -429,7 +442,21 @@ void SolverWorker::edit_material(const MaterialEdit& edit) {
     pipeline_->prepare(progress_.get());
     solver_ready_ = true;
     pipeline_->edit_material(edit.name, edit.reflectance, edit.emitted_radiance);
-    // The emitters' direct light at the vertices, and a textured surface's emission, change with it.
+    run_after_edit();
+}
+
+void SolverWorker::edit_outside_light(const std::pair<std::string, std::string>& sky_and_sun) {
+    if (!pipeline_) return;
+    pipeline_->prepare(progress_.get());
+    solver_ready_ = true;
+    pipeline_->edit_outside_light(sky_and_sun.first, sky_and_sun.second, progress_.get());
+    options_.scene.sky = sky_and_sun.first;
+    options_.scene.sun = sky_and_sun.second;
+    run_after_edit();
+}
+
+void SolverWorker::run_after_edit() {
+    // The emitters' direct light at the vertices, and a textured surface's emission, change with an edit.
     display_ = pipeline_->build_display(options_.display);
     step_offset_ = 0;
     start_bounce_history();
@@ -452,7 +479,8 @@ void SolverWorker::write(const Write& file) {
     std::string error;
     try {
         if (is_saved_solution_path(file.path)) {
-            if (!solver_ready_) throw InputError(file.path + ": nothing to save before the form factors are known");
+            if (!solver_ready_)
+                throw InputError(file.path + ": nothing to save before the form factors are known");
             write_saved_solution(file.path, pipeline_->saved_solution());
         } else if (!export_format(file.path)) {
             throw InputError(file.path + ": save as .radiosity, or export as .ply, .gltf or .glb");

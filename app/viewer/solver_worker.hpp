@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <tbb/task_arena.h>
@@ -48,6 +49,9 @@ class SolverWorker {
     // solution shown, with the same form factors. Edits of a material not yet made replace each other.
     void request_material_edit(const std::string& name, const glm::dvec3& reflectance,
                                const glm::dvec3& emitted_radiance);
+    // The sky and sun as --sky and --sun take them (empty: as the scene was opened), measured again on the
+    // same form factors; the solver runs on from the solution shown.
+    void request_outside_light(const std::string& sky, const std::string& sun);
     // Writes the solution shown: FILE.radiosity (the solve-once format, after the form factors), or the
     // display mesh with its colours at this exposure (.ply, .gltf, .glb). The panel shows "wrote FILE", or
     // the error.
@@ -85,6 +89,9 @@ class SolverWorker {
 
     void loop();
     void edit_material(const MaterialEdit& edit);
+    void edit_outside_light(const std::pair<std::string, std::string>& sky_and_sun);
+    // After an edit of the transport's sources: the display again, a fresh history, and the run started.
+    void run_after_edit();
     void write(const Write& write);
     bool has_work() const;  // with mutex_ held
     void rebuild(const PipelineOptions& options);
@@ -124,6 +131,7 @@ class SolverWorker {
     std::optional<Reset> pending_reset_;
     std::optional<ColourMode> pending_colour_mode_;
     std::vector<MaterialEdit> pending_edits_;
+    std::optional<std::pair<std::string, std::string>> pending_outside_;  // sky, sun
     std::vector<Write> pending_writes_;
     std::size_t pending_steps_ = 0;
     bool running_ = false;

@@ -330,15 +330,22 @@ void ViewerPanel::draw_scene(SolverWorker& worker, const ViewerStatistics& stati
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("or drop a .obj, .ply, .gltf, .glb or .radiosity (solve --save) file on the window");
     ImGui::PopStyleColor();
-    // As --sky and --sun; read when the scene is opened or recomputed, and a bad value is reported there.
-    ImGui::InputText("sky", &options_.scene.sky);
+    // As --sky and --sun; Apply (or Enter) measures their light again on the same form factors; opening or
+    // re-meshing reads them too. A bad value is reported in the panel.
+    bool apply = ImGui::InputText("sky", &options_.scene.sky, ImGuiInputTextFlags_EnterReturnsTrue);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
-            "R,G,B or L: a uniform sky; overcast,L: the CIE overcast sky; none or empty: the scene's own");
-    ImGui::InputText("sun", &options_.scene.sun);
+            "R,G,B or L: a uniform sky; overcast,L: the CIE overcast sky; none; empty: as the scene was "
+            "opened");
+    apply |= ImGui::InputText("sun", &options_.scene.sun, ImGuiInputTextFlags_EnterReturnsTrue);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
-            "X,Y,Z,E or X,Y,Z,R,G,B: toward the sun, and its irradiance; none or empty: the scene's own");
+            "X,Y,Z,E or X,Y,Z,R,G,B: toward the sun, and its irradiance; none; empty: as the scene was "
+            "opened");
+    ImGui::SameLine();
+    apply |= ImGui::Button("Apply");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The sky and sun now, with the same form factors");
+    if (apply) worker.request_outside_light(options_.scene.sky, options_.scene.sun);
     // 0 until the scene (or the subdivision) chosen says what its default is.
     ImGui::InputDouble("patch size", &options_.scene.patch_size, 0.0, 0.0,
                        options_.scene.patch_size > 0.0 ? "%.4g" : "default");

@@ -121,5 +121,35 @@ TEST(MaterialEdit, BadValuesAndUnknownNamesAreRefusedWithTheName) {
     EXPECT_NE(message("no such", glm::dvec3(0.5), glm::dvec3(0.0)).find("no such"), std::string::npos);
 }
 
+// The sky and sun edited on a solved scene open to the outside: the light measured again on the same form
+// factors, continued from the solution, is the fresh solve opened with that sky and sun; an empty value
+// returns to the scene as opened, and a bad one changes nothing.
+TEST(MaterialEdit, TheSkyAndSunChangedLiveReachTheFreshSolveOpenedWithThem) {
+    PipelineOptions options = options_for("builtin:parallel", "uniform");
+    options.scene.patch_size = 0.0;
+    RadiosityPipeline edited(options);
+    edited.solve();
+    edited.edit_outside_light("0.2,0.3,0.4", "1,2,0.5,3");
+    edited.solve();
+    PipelineOptions lit = options;
+    lit.scene.sky = "0.2,0.3,0.4";
+    lit.scene.sun = "1,2,0.5,3";
+    RadiosityPipeline fresh(lit);
+    fresh.solve();
+    EXPECT_EQ(edited.work().form_factor_passes, 1u);
+    EXPECT_LT(relative_rms(edited, fresh), 1e-6);
+    EXPECT_LT(relative_imbalance(edited), 0.005);
+    EXPECT_GT(edited.energy_balance().outside.x, 0.0);
+
+    EXPECT_THROW(edited.edit_outside_light("bright", ""), InputError);
+    EXPECT_LT(relative_rms(edited, fresh), 1e-6);  // unchanged
+    edited.edit_outside_light("", "");
+    edited.solve();
+    RadiosityPipeline unlit(options);
+    unlit.solve();
+    EXPECT_LT(relative_rms(edited, unlit), 1e-6);
+    EXPECT_EQ(edited.energy_balance().outside.x, 0.0);
+}
+
 }  // namespace
 }  // namespace rad

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <thread>
 
 #include "pipeline/radiosity_pipeline.hpp"
@@ -479,6 +479,35 @@ TEST(ViewerWorker, SavesTheSolutionAndExportsTheMeshShown) {
     EXPECT_FALSE(std::filesystem::exists(unknown));
     ASSERT_TRUE(worker.snapshot().radiance);
     EXPECT_EQ(worker.snapshot().radiance->step, 3u);
+}
+
+// A sky set from the panel lights the scene shown without a new form-factor pass, and the solver runs on
+// by itself until it converges; a bad value is reported as bad input and changes nothing.
+TEST(ViewerWorker, ASkySetLiveLightsTheSceneWithTheSameFormFactors) {
+    PipelineOptions options = cornell(0.0);
+    options.scene.scene = "builtin:parallel";
+    SolverWorker worker(options);
+    worker.request_steps(30);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const auto total = [](const SolverSnapshot& snapshot) {
+        double sum = 0.0;
+        for (const glm::vec3& l : snapshot.radiance->cumulative) sum += l.r + l.g + l.b;
+        return sum;
+    };
+    const SolverSnapshot before = worker.snapshot();
+    ASSERT_TRUE(before.radiance);
+    worker.request_outside_light("bright", "");
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(60)));
+    EXPECT_TRUE(worker.snapshot().bad_input);
+    EXPECT_NE(worker.snapshot().error.find("--sky"), std::string::npos) << worker.snapshot().error;
+    worker.request_outside_light("5", "");
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot after = worker.snapshot();
+    ASSERT_TRUE(after.radiance);
+    EXPECT_TRUE(after.error.empty()) << after.error;
+    EXPECT_EQ(after.statistics.form_factor_passes, 1u);
+    EXPECT_EQ(after.statistics.status, SolverStatus::converged);
+    EXPECT_GT(total(after), total(before) * 1.5);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "rad/ray/ray_scene.hpp"
+#include "rad/transport/source_update.hpp"
 #include "rad/transport/uniform/uniform_transport.hpp"
 #include "transport/external/outside_light.hpp"
 
@@ -127,14 +128,7 @@ SceneTransport build_transport(const Scene& scene, const PatchMesh& base, const 
 void add_outside_light(const Scene& scene, const TransportSettings& settings, SceneTransport& out,
                        Progress* progress) {
     if (!has_outside_light(scene)) return;
-    Transport& t = *out.transport;
-    const PatchMesh& elements = *out.patches;
-    const RayScene rays(elements);
-    t.outside = outside_irradiance(scene, elements, rays, settings.form_factors.seed, t.area, progress);
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        const Material& material = scene.surfaces[elements.patches[i].surface].material;
-        t.emission[i] = material.emitted_radiosity() + t.reflectance[i] * t.outside[i];
-    }
+    update_outside_light(*out.transport, *out.patches, scene, settings.form_factors.seed, progress);
 }
 
 }  // namespace
