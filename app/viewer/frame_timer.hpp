@@ -25,6 +25,18 @@ class FrameTimer {
     double mean() const { return mean_; }
     double longest() const { return longest_; }
     double longest_while_busy() const { return longest_while_busy_; }
+    // From a key or button press arriving to the end of the frame that drew its effect (the swap), which is
+    // what a person waits for but the display's own delay.
+    void add_input_latency(double seconds, bool worker_busy) {
+        latest_input_ = seconds;
+        longest_input_ = std::max(longest_input_, seconds);
+        if (worker_busy) longest_input_while_busy_ = std::max(longest_input_while_busy_, seconds);
+        ++inputs_;
+    }
+    double latest_input_latency() const { return latest_input_; }
+    double longest_input_latency() const { return longest_input_; }
+    double longest_input_latency_while_busy() const { return longest_input_while_busy_; }
+    std::size_t inputs() const { return inputs_; }
     std::size_t count() const { return count_; }
 
   private:
@@ -33,6 +45,10 @@ class FrameTimer {
     double longest_ = 0.0;
     double longest_while_busy_ = 0.0;
     std::size_t count_ = 0;
+    double latest_input_ = 0.0;
+    double longest_input_ = 0.0;
+    double longest_input_while_busy_ = 0.0;
+    std::size_t inputs_ = 0;
 };
 
 }  // namespace rad

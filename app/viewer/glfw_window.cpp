@@ -85,12 +85,17 @@ WindowEvents GlfwWindow::take_events() {
     return std::exchange(events_, WindowEvents{});
 }
 
+void GlfwWindow::note_press() {
+    if (!events_.first_press) events_.first_press = glfwGetTime();
+}
+
 void GlfwWindow::count_event(GLFWwindow* window) {
     ++owner(window).event_count_;
 }
 
 void GlfwWindow::on_mouse_button(GLFWwindow* window, int button, int action, int) {
     count_event(window);
+    if (action == GLFW_PRESS) owner(window).note_press();
     if (button != GLFW_MOUSE_BUTTON_LEFT || action != GLFW_PRESS) return;
     glm::dvec2 at(0.0);
     glfwGetCursorPos(window, &at.x, &at.y);
@@ -104,7 +109,9 @@ void GlfwWindow::on_scroll(GLFWwindow* window, double, double dy) {
 
 void GlfwWindow::on_key(GLFWwindow* window, int key, int, int action, int) {
     count_event(window);
-    if (action == GLFW_PRESS) owner(window).events_.pressed_keys.push_back(key);
+    if (action != GLFW_PRESS) return;
+    owner(window).note_press();
+    owner(window).events_.pressed_keys.push_back(key);
 }
 
 void GlfwWindow::on_drop(GLFWwindow* window, int count, const char** paths) {

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -17,6 +18,8 @@ struct WindowEvents {
     std::vector<int> pressed_keys;     // GLFW key codes, in order
     std::vector<std::string> dropped;  // paths of files dropped on the window
     std::vector<glm::dvec2> clicks;    // where the left button went down, in window coordinates
+    // glfwGetTime() when the first key or button of these went down (input waiting to reach the screen).
+    std::optional<double> first_press;
 };
 
 // The platform side of the viewer: GLFW, one window with an OpenGL 3.3 core context made current on the
@@ -43,6 +46,7 @@ class GlfwWindow {
     static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
     static void on_drop(GLFWwindow* window, int count, const char** paths);
     static void count_event(GLFWwindow* window);
+    void note_press();
     static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
 
     GLFWwindow* window_ = nullptr;

@@ -143,6 +143,7 @@ void Viewer::frame(const Framebuffer& framebuffer, double seconds) {
     advance_script(snapshot, worker_busy, view);
     imgui_.end_frame();
     window_.swap_buffers();
+    if (events.first_press) frames_.add_input_latency(glfwGetTime() - *events.first_press, worker_busy);
 }
 
 void Viewer::take_worker_results(const SolverSnapshot& snapshot) {
@@ -352,6 +353,11 @@ void Viewer::advance_script(const SolverSnapshot& snapshot, bool worker_busy, co
         "%.1f ms\n",
         radiance_->step, frames_.count(), frames_.mean() * 1e3, frames_.longest() * 1e3,
         FrameTimer::kWarmUpFrames, frames_.longest_while_busy() * 1e3);
+    if (frames_.inputs() > 0) {
+        std::printf("input to screen: %zu presses, longest %.1f ms, longest while working %.1f ms\n",
+                    frames_.inputs(), frames_.longest_input_latency() * 1e3,
+                    frames_.longest_input_latency_while_busy() * 1e3);
+    }
     if (!options_.screenshot.empty() && !save_screenshot(options_.screenshot, view)) exit_status_ = 1;
     if (options_.idle_seconds > 0.0) {
         idle_ = IdleStart{glfwGetTime(), process_cpu_seconds(), frames_drawn_};

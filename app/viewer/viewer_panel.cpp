@@ -494,6 +494,11 @@ void ViewerPanel::draw_statistics(const ViewerStatistics& statistics, const Fram
                        statistics.seconds.form_factors, statistics.seconds.solve);
     ImGui::TextWrapped("frame %.1f ms (mean %.1f ms), longest while working %.1f ms", frames.latest() * 1e3,
                        frames.mean() * 1e3, frames.longest_while_busy() * 1e3);
+    if (frames.inputs() > 0) {
+        ImGui::TextWrapped("key to screen %.1f ms, longest %.1f ms (%.1f ms while working)",
+                           frames.latest_input_latency() * 1e3, frames.longest_input_latency() * 1e3,
+                           frames.longest_input_latency_while_busy() * 1e3);
+    }
 }
 
 }  // namespace rad
