@@ -137,15 +137,29 @@ struct PointLight {
 // H_d at a point with unit normal n, and how much of the light it sees. A first few rays tell whether the
 // point sees all of the light or none of it (most points); only where they disagree (a penumbra) are the
 // rest traced.
+// Σ E_k F_k over every emitter patch k, unoccluded.
+glm::dvec3 unoccluded_irradiance(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
+                                 std::span<const glm::dvec3> emitted) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t k = 0; k < emitters.patches.size(); ++k) {
+        const ConvexPolygon source = clip_to_front(emitters.shapes[k].polygon, origin, n);
+        if (!source.empty())
+            sum += emitted[emitters.patches[k]] * point_polygon_factor(origin, n, source.span());
+    }
+    return sum;
+}
+
 PointLight direct_irradiance(const glm::dvec3& origin, const glm::dvec3& n, const Emitters& emitters,
                              std::span<const glm::dvec3> emitted, const RayScene& scene, double offset,
-                             RandomStream& random, Scratch& s) {
+                             bool exact_when_open, RandomStream& random, Scratch& s) {
     const double total = emitter_weights(origin, n, emitters, s.weight);
     if (!(total > 0.0)) return {};
     const Estimate first =
         estimate_direct(origin, n, kVertexFirstRays, total, emitters, emitted, scene, offset, random, s);
     if (first.uniform) {
-        return {first.irradiance, first.irradiance == glm::dvec3(0.0) ? Visibility::none : Visibility::whole};
+        if (first.irradiance == glm::dvec3(0.0)) return {first.irradiance, Visibility::none};
+        return {exact_when_open ? unoccluded_irradiance(origin, n, emitters, emitted) : first.irradiance,
+                Visibility::whole};
     }
     const Estimate rest = estimate_direct(origin, n, kVertexShadowRays - kVertexFirstRays, total, emitters,
                                           emitted, scene, offset, random, s);
@@ -197,8 +211,11 @@ void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> pa
 std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays,
                                   std::span<const glm::dvec3> emitted, const Emitters& emitters,
                                   std::span<const glm::dvec3> points, std::span<const glm::dvec3> normals,
-                                  std::uint64_t seed) {
+                                  std::uint64_t seed, double exact_factor_budget = kVertexExactFactorBudget) {
     const double offset = ray_offset(patches);
+    const bool exact_when_open =
+        static_cast<double>(points.size()) * static_cast<double>(emitters.patches.size()) <=
+        exact_factor_budget;
     std::vector<PointLight> light(points.size());
     tbb::enumerable_thread_specific<Scratch> scratch;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 64),
@@ -207,7 +224,7 @@ std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays
                           for (std::size_t v = range.begin(); v != range.end(); ++v) {
                               RandomStream random(seed ^ kVertexKey, v);
                               light[v] = direct_irradiance(points[v], normals[v], emitters, emitted, rays,
-                                                           offset, random, s);
+                                                           offset, exact_when_open, random, s);
                           }
                       });
     return light;
@@ -225,14 +242,16 @@ bool draws_vertex_direct_light(const PatchMesh& patches, std::span<const glm::dv
 std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const RayScene& rays,
                                              std::span<const glm::dvec3> emitted,
                                              std::span<const glm::dvec3> points,
-                                             std::span<const glm::dvec3> normals, std::uint64_t seed) {
+                                             std::span<const glm::dvec3> normals, std::uint64_t seed,
+                                             double exact_factor_budget) {
     if (emitted.size() != patches.size() || normals.size() != points.size()) {
         throw std::invalid_argument("direct_irradiance_at: the arrays' sizes do not match");
     }
     std::vector<glm::dvec3> irradiance(points.size(), glm::dvec3(0.0));
     const std::optional<Emitters> emitters = find_emitters(patches, emitted);
     if (!emitters) return irradiance;
-    const std::vector<PointLight> light = lights_at(patches, rays, emitted, *emitters, points, normals, seed);
+    const std::vector<PointLight> light =
+        lights_at(patches, rays, emitted, *emitters, points, normals, seed, exact_factor_budget);
     for (std::size_t k = 0; k < points.size(); ++k) irradiance[k] = light[k].irradiance;
     return irradiance;
 }

@@ -13,6 +13,10 @@ namespace rad {
 
 // Shadow rays per display vertex for its direct light, drawn over the emitter patches by power.
 inline constexpr int kVertexShadowRays = 128;
+// A vertex that sees all of the light takes the exact sum of every emitter patch's unoccluded factor where
+// vertices × emitter patches stay within this many factors; beyond, the draws' estimate, whose spread where
+// the patches' factors differ much from their weights (beside a luminous ceiling) streaks the walls.
+inline constexpr double kVertexExactFactorBudget = 2e7;
 
 struct VertexDirectLightInput {
     const PatchMesh* patches = nullptr;  // the patches the display mesh was built from
@@ -37,7 +41,9 @@ struct VertexDirectLightInput {
 // patches' centroid, so a vertex on an edge is not in the plane of the surface beyond) the exact unoccluded
 // point-to-polygon factor of each emitter patch drawn times the share of its shadow rays that nothing blocks;
 // up to kVertexShadowRays rays drawn over the emitters by power (each drawn when they are few), so every
-// vertex's value is unbiased; 16 first, and the rest only where they disagree (a penumbra). Each vertex that
+// vertex's value is unbiased; 16 first, and the rest only where they disagree (a penumbra). Where the 16
+// all reach the light, the exact unoccluded sum over every emitter patch instead (within
+// kVertexExactFactorBudget). Each vertex that
 // sees some of the light then moves by its patches' shortfalls (what their triangles draw against ρ H_d,
 // what they hold), so a falloff's chords do not darken or brighten them; vertices in umbra keep 0.
 // vertex_radiance shows each vertex its patches' reconstruction of the rest of the light plus this. Leaves it
@@ -58,6 +64,7 @@ bool draws_vertex_direct_light(const PatchMesh& patches, std::span<const glm::dv
 std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const RayScene& rays,
                                              std::span<const glm::dvec3> emitted,
                                              std::span<const glm::dvec3> points,
-                                             std::span<const glm::dvec3> normals, std::uint64_t seed = 1);
+                                             std::span<const glm::dvec3> normals, std::uint64_t seed = 1,
+                                             double exact_factor_budget = kVertexExactFactorBudget);
 
 }  // namespace rad
