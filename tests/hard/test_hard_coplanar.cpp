@@ -1,9 +1,10 @@
 // Hard case: coplanar overlapping surfaces. The published Cornell box's light lies in the ceiling's plane and
-// the ceiling quad covers it. Two surfaces in one place tie: rays and the depth buffer pick either, so the
-// light is hidden or blotched and the light arriving there is split between the two. The loader detects an
-// emitter lying in the plane of a non-emitting surface, facing the same way and overlapping it, warns, and
-// moves the emitter a thousandth of the scene's diagonal in front of it: the light is what is seen and hit,
-// the ceiling behind it receives (almost) nothing, and the room is lit as if the opening were cut out.
+// the ceiling quad covers it; a rug may lie in a floor's. Two surfaces in one place tie: rays and the depth
+// buffer pick either, so the light is hidden or blotched, a rug speckles, and the light arriving there is
+// split between the two. The loader detects two surfaces lying in one plane, facing the same way and
+// overlapping, warns, and moves the emitter (else the smaller surface) a thousandth of the scene's diagonal
+// in front of the other: the light is what is seen and hit, the ceiling behind it receives (almost) nothing,
+// and the room is lit as if the opening were cut out.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -109,6 +110,27 @@ TEST(Coplanar, ALightAcrossTwoSurfacesIsMovedOnce) {
     const auto [lo, hi] = heights(surface(built, "lamp"));
     EXPECT_NEAR(lo, 1e-3 * std::sqrt(5.0), 1e-12);  // up: the floor's front
     EXPECT_NEAR(hi, 1e-3 * std::sqrt(5.0), 1e-12);
+}
+
+// Two surfaces that do not emit, a rug in the floor's plane: the smaller, the rug, is moved up (the floor's
+// front), with a warning naming both; the floor stays.
+TEST(Coplanar, ARugInTheFloorsPlaneIsMovedInFrontOfIt) {
+    PolygonSoup soup;
+    soup.source = "room";
+    soup.positions = {{0, 0, 0},     {0, 0, 2},     {2, 0, 2},     {2, 0, 0},
+                      {0.5, 0, 0.5}, {0.5, 0, 1.5}, {1.5, 0, 1.5}, {1.5, 0, 0.5}};
+    soup.groups = {{"floor", Material{"grey", glm::dvec3(0.5), glm::dvec3(0.0)}},
+                   {"rug", Material{"red", glm::dvec3(0.7, 0.05, 0.05), glm::dvec3(0.0)}}};
+    soup.polygons = {{{0, 1, 2, 3}, 0}, {{4, 5, 6, 7}, 1}};
+    const Scene built = build_scene(soup);
+    ASSERT_EQ(lift_warnings(built), 1);
+    EXPECT_NE(built.warnings.front().find("room: 'rug' lies in the plane of 'floor'"), std::string::npos)
+        << built.warnings.front();
+    const double lift = 1e-3 * std::sqrt(8.0);  // the diagonal of the 2 x 0 x 2 box
+    const auto [lo, hi] = heights(surface(built, "rug"));
+    EXPECT_NEAR(lo, lift, 1e-12);
+    EXPECT_NEAR(hi, lift, 1e-12);
+    EXPECT_EQ(heights(surface(built, "floor")), std::make_pair(0.0, 0.0));
 }
 
 struct Solution {

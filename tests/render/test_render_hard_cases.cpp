@@ -130,5 +130,41 @@ INSTANTIATE_TEST_SUITE_P(Views, CoplanarLightImage,
                                            View{"close_under_the_ceiling", "100,500,100,278,548,280", 50.0}),
                          [](const auto& info) { return info.param.name; });
 
+// A rug modelled in the floor's plane (two surfaces, neither emitting) ties with the floor in the depth test
+// and for rays: seen from above, the rug's pixels speckled with the floor's grey. The loader moves the
+// smaller surface, the rug, in front of the floor: every pixel well inside it shows the rug's red.
+TEST(CoplanarRugImage, EveryRugPixelShowsTheRug) {
+    const test::TempDir folder;
+    folder.write("rug.mtl",
+                 "newmtl floor\nKd 0.5 0.5 0.5\nnewmtl rug\nKd 0.7 0.05 0.05\n"
+                 "newmtl lamp\nKd 0.5 0.5 0.5\nKe 5 5 5\n");
+    const std::string scene =
+        folder.write("rug.obj",
+                     "mtllib rug.mtl\n"
+                     "v 0 0 0\nv 0 0 2\nv 2 0 2\nv 2 0 0\n"                  // the floor, facing up
+                     "v 0.5 0 0.5\nv 0.5 0 1.5\nv 1.5 0 1.5\nv 1.5 0 0.5\n"  // the rug in its plane
+                     "v 0 2 0\nv 2 2 0\nv 2 2 2\nv 0 2 2\n"                  // the lamp above, facing down
+                     "o floor\nusemtl floor\nf 1 2 3 4\no rug\nusemtl rug\nf 5 6 7 8\no lamp\nusemtl lamp\nf "
+                     "9 10 11 12\n");
+    const std::string out = (folder.path() / "rug.png").string();
+    const test::CommandResult result = test::run_program(
+        RAD_BINARY, {"render", scene, "--width", std::to_string(kSize), "--height", std::to_string(kSize),
+                     "--camera", "1,1.9,1,1,0,1,0,0,-1", "--fov", "60", "--out", out});
+    ASSERT_EQ(result.status, 0) << result.err;
+    EXPECT_NE(result.err.find("'rug' lies in the plane of 'floor'"), std::string::npos) << result.err;
+    const Image image = read_image(out);
+    // The rug spans ±0.5 around the centre seen from 1.9 above at 60°: ±0.5 / (1.9 tan 30°) of the half
+    // width, 36 pixels; 30 keeps off its edges.
+    int grey = 0, pixels = 0;
+    for (int y = kSize / 2 - 30; y < kSize / 2 + 30; ++y) {
+        for (int x = kSize / 2 - 30; x < kSize / 2 + 30; ++x) {
+            const glm::vec3& p = image.at(x, y);
+            ++pixels;
+            if (!(p.r > 2.0f * p.g)) ++grey;  // sRGB codes: the rug about 2.8 times, the floor 1
+        }
+    }
+    EXPECT_EQ(grey, 0) << "of " << pixels << " pixels inside the rug";
+}
+
 }  // namespace
 }  // namespace rad

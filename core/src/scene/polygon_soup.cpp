@@ -9,7 +9,7 @@
 
 #include "rad/geometry/polygon.hpp"
 #include "rad/util/error.hpp"
-#include "scene/coplanar_emitters.hpp"
+#include "scene/coplanar_faces.hpp"
 
 namespace rad {
 
@@ -255,7 +255,7 @@ void add_surface(Scene& scene, const PolygonSoup::Group& group, SurfaceBuilder& 
 
 Scene build_scene(const PolygonSoup& input) {
     std::vector<std::string> lift_warnings;
-    const std::optional<PolygonSoup> lifted = lift_coplanar_emitters(input, lift_warnings);
+    const std::optional<PolygonSoup> lifted = lift_coplanar_faces(input, lift_warnings);
     const PolygonSoup& soup = lifted ? *lifted : input;
     const double min_area = kZeroAreaFraction * scene_size_squared(soup);
     std::size_t dropped = 0, duplicates = 0;

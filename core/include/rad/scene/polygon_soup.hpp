@@ -39,9 +39,10 @@ struct PolygonSoup {
 // triangulated; an edge that OpenMesh cannot take (non-manifold) gets its own copy of the vertices. Two-sided
 // faces go to back-to-back surfaces of their own (Surface::back_to_back): pairs of polygons with the same
 // corners in opposite orders (counted in a warning), and the faces of a two-sided material, with a reversed
-// copy as the back (a surface named "NAME (back)"). A group's one-sided faces stay in one surface. An
-// emitting polygon that lies in the plane of a non-emitting one, facing the same way and overlapping it, is
-// moved a thousandth of the scene's diagonal in front of it, with a warning (core/src/coplanar_emitters.hpp).
+// copy as the back (a surface named "NAME (back)"). A group's one-sided faces stay in one surface. Of two
+// polygons of different surfaces that lie in one plane, face the same way and overlap, the emitter's (else
+// the smaller surface's) is moved a thousandth of the scene's diagonal in front of the other, with a warning
+// (core/src/scene/coplanar_faces.hpp).
 // Throws InputError when nothing with area is left.
 Scene build_scene(const PolygonSoup& soup);
 

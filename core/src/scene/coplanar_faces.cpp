@@ -1,4 +1,4 @@
-#include "scene/coplanar_emitters.hpp"
+#include "scene/coplanar_faces.hpp"
 
 #include <algorithm>
 #include <array>
@@ -45,46 +45,73 @@ class CoplanarFinder {
     }
 
     double diagonal() const { return diagonal_; }
+    // The polygon's unit normal, plane and box; nothing for a polygon that is not planar.
+    std::optional<PlanarPolygon> planar_polygon(std::uint32_t i) const { return planar(i); }
 
-    // Indexes the planar emitting polygons by plane; returns whether there are any.
-    bool index_emitters() {
+    // Every pair of polygons of different surfaces that lie in one plane, face the same way and overlap with
+    // positive area. The planar polygons are bucketed by plane; within a bucket (and its neighbour on the
+    // offset's grid, where a plane straddles a grid line) a sweep along the axis of the boxes' largest
+    // extent compares only polygons whose boxes meet along it, and only buckets holding two surfaces at all.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> overlaps() const {
+        std::map<PlaneKey, std::vector<PlanarPolygon>> by_plane;
         for (std::uint32_t i = 0; i < soup_.polygons.size(); ++i) {
-            if (!soup_.groups[soup_.polygons[i].group].material.emits()) continue;
-            if (std::optional<PlanarPolygon> p = planar(i)) {
-                emitters_by_plane_[key(*p, 0)].push_back(emitters_.size());
-                emitters_.push_back(*p);
-            }
+            if (std::optional<PlanarPolygon> p = planar(i)) by_plane[key(*p, 0)].push_back(*p);
         }
-        return !emitters_.empty();
-    }
-
-    // Every (emitter, non-emitting polygon) pair, the emitter by its index, that lie in one plane, face the
-    // same way and overlap with positive area. One pass over the polygons, each looked up among the emitters
-    // of its plane: the work grows with the polygons and the memory with the emitters.
-    std::vector<std::pair<std::size_t, std::uint32_t>> overlaps() const {
-        std::vector<std::pair<std::size_t, std::uint32_t>> out;
-        for (std::uint32_t i = 0; i < soup_.polygons.size(); ++i) {
-            if (soup_.groups[soup_.polygons[i].group].material.emits()) continue;
-            const std::optional<PlanarPolygon> c = planar(i);
-            if (!c) continue;
-            for (std::int64_t shift = -1; shift <= 1; ++shift) {
-                const auto bucket = emitters_by_plane_.find(key(*c, shift));
-                if (bucket == emitters_by_plane_.end()) continue;
-                for (std::size_t k : bucket->second) {
-                    const PlanarPolygon& e = emitters_[k];
-                    if (glm::dot(c->normal, e.normal) < 1.0 - kParallelTolerance) continue;
-                    if (std::abs(c->offset - e.offset) > tolerance_) continue;
-                    if (!boxes_overlap(c->box, e.box)) continue;
-                    if (overlap_in_plane(e, *c)) out.emplace_back(k, c->polygon);
-                }
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+        for (const auto& [k, bucket] : by_plane) {
+            PlaneKey next = k;
+            ++next[3];
+            const auto neighbour = by_plane.find(next);
+            std::vector<Candidate> candidates;
+            for (const PlanarPolygon& p : bucket) candidates.push_back({&p, false});
+            if (neighbour != by_plane.end()) {
+                for (const PlanarPolygon& p : neighbour->second) candidates.push_back({&p, true});
             }
+            sweep(candidates, out);
         }
         return out;
     }
 
-    const PlanarPolygon& emitter(std::size_t k) const { return emitters_[k]; }
-
   private:
+    struct Candidate {
+        const PlanarPolygon* polygon;
+        bool from_neighbour;  // its own bucket compares it with its own polygons
+    };
+
+    std::uint32_t group_of(const PlanarPolygon& p) const { return soup_.polygons[p.polygon].group; }
+
+    void sweep(std::vector<Candidate>& candidates,
+               std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) const {
+        const std::uint32_t first_group = group_of(*candidates.front().polygon);
+        const bool one_surface = std::all_of(candidates.begin(), candidates.end(), [&](const Candidate& c) {
+            return group_of(*c.polygon) == first_group;
+        });
+        if (one_surface) return;
+        BoundingBox all;
+        for (const Candidate& c : candidates) {
+            all.extend(c.polygon->box.min);
+            all.extend(c.polygon->box.max);
+        }
+        const glm::dvec3 extent = all.extent();
+        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+        std::sort(candidates.begin(), candidates.end(), [&](const Candidate& a, const Candidate& b) {
+            return a.polygon->box.min[axis] < b.polygon->box.min[axis];
+        });
+        for (std::size_t i = 0; i < candidates.size(); ++i) {
+            const PlanarPolygon& a = *candidates[i].polygon;
+            for (std::size_t j = i + 1; j < candidates.size(); ++j) {
+                const PlanarPolygon& b = *candidates[j].polygon;
+                if (b.box.min[axis] > a.box.max[axis] + tolerance_) break;
+                if (candidates[i].from_neighbour && candidates[j].from_neighbour) continue;
+                if (group_of(a) == group_of(b)) continue;
+                if (glm::dot(a.normal, b.normal) < 1.0 - kParallelTolerance) continue;
+                if (std::abs(a.offset - b.offset) > tolerance_) continue;
+                if (!boxes_overlap(a.box, b.box)) continue;
+                if (overlap_in_plane(a, b)) out.emplace_back(a.polygon, b.polygon);
+            }
+        }
+    }
+
     // The polygon's corners without repeats (as in "f 1 2 2 3"), as build_scene takes them.
     std::vector<glm::dvec3> corners(std::uint32_t polygon) const {
         std::vector<glm::dvec3> out;
@@ -188,43 +215,62 @@ class CoplanarFinder {
     const PolygonSoup& soup_;
     double diagonal_ = 0.0;
     double tolerance_ = 0.0;
-    std::vector<PlanarPolygon> emitters_;
-    std::map<PlaneKey, std::vector<std::size_t>> emitters_by_plane_;  // indices into emitters_
 };
 
-std::string lift_warning(const PolygonSoup& soup, std::uint32_t emitter_group, std::uint32_t covered_group,
+// Per surface (group), the area of its polygons: the smaller of two coplanar surfaces is the one on top.
+std::vector<double> group_areas(const PolygonSoup& soup) {
+    std::vector<double> area(soup.groups.size(), 0.0);
+    for (const PolygonSoup::Polygon& p : soup.polygons) {
+        std::vector<glm::dvec3> points;
+        for (std::uint32_t v : p.vertices) points.push_back(soup.positions[v]);
+        if (points.size() >= 3) area[p.group] += 0.5 * glm::length(newell_normal(points));
+    }
+    return area;
+}
+
+// Which of two overlapping polygons moves in front: the emitter's, else the smaller surface's (the first
+// where the two tie).
+std::uint32_t covering(const PolygonSoup& soup, const std::vector<double>& area, std::uint32_t a,
+                       std::uint32_t b) {
+    const PolygonSoup::Group& ga = soup.groups[soup.polygons[a].group];
+    const PolygonSoup::Group& gb = soup.groups[soup.polygons[b].group];
+    if (ga.material.emits() != gb.material.emits()) return ga.material.emits() ? a : b;
+    return area[soup.polygons[b].group] < area[soup.polygons[a].group] ? b : a;
+}
+
+std::string lift_warning(const PolygonSoup& soup, std::uint32_t moved_group, std::uint32_t covered_group,
                          double lift) {
+    const PolygonSoup::Group& moved = soup.groups[moved_group];
     std::ostringstream out;
-    out << soup.source << ": the emitter '" << soup.groups[emitter_group].name << "' lies in the plane of '"
-        << soup.groups[covered_group].name << "', facing the same way, and overlaps it; it is moved " << lift
-        << " (" << kCoplanarEmitterLift
-        << " of the scene's size) in front of it, so the light is what is seen and lit there";
+    out << soup.source << ": " << (moved.material.emits() ? "the emitter '" : "'") << moved.name
+        << "' lies in the plane of '" << soup.groups[covered_group].name
+        << "', facing the same way, and overlaps it; it is moved " << lift << " (" << kCoplanarLift
+        << " of the scene's size) in front of it, so " << (moved.material.emits() ? "the light" : "it")
+        << " is what is seen and lit there";
     return out.str();
 }
 
 }  // namespace
 
-std::optional<PolygonSoup> lift_coplanar_emitters(const PolygonSoup& soup,
-                                                  std::vector<std::string>& warnings) {
-    const bool any_emits =
-        std::any_of(soup.groups.begin(), soup.groups.end(), [](const auto& g) { return g.material.emits(); });
-    if (!any_emits) return std::nullopt;
-    CoplanarFinder finder(soup);
-    if (!finder.index_emitters()) return std::nullopt;
-    const std::vector<std::pair<std::size_t, std::uint32_t>> overlaps = finder.overlaps();
+std::optional<PolygonSoup> lift_coplanar_faces(const PolygonSoup& soup, std::vector<std::string>& warnings) {
+    if (soup.groups.size() < 2) return std::nullopt;
+    const CoplanarFinder finder(soup);
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>> overlaps = finder.overlaps();
     if (overlaps.empty()) return std::nullopt;
 
-    std::map<std::uint32_t, glm::dvec3> moves;                // emitting polygon -> its unit normal
-    std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (emitter group, covered group), warned
-    for (const auto& [k, covered] : overlaps) {
-        const PlanarPolygon& e = finder.emitter(k);
-        moves.emplace(e.polygon, e.normal);
-        pairs.emplace(soup.polygons[e.polygon].group, soup.polygons[covered].group);
+    const std::vector<double> area = group_areas(soup);
+    std::map<std::uint32_t, glm::dvec3> moves;                // moved polygon -> its unit normal
+    std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (moved group, covered group), warned
+    for (const auto& [a, b] : overlaps) {
+        const std::uint32_t top = covering(soup, area, a, b);
+        const std::uint32_t under = top == a ? b : a;
+        // A polygon both covers and is covered only in a stack of three or more; it moves once.
+        if (moves.count(top) == 0) moves.emplace(top, finder.planar_polygon(top)->normal);
+        pairs.emplace(soup.polygons[top].group, soup.polygons[under].group);
     }
 
-    const double lift = kCoplanarEmitterLift * finder.diagonal();
-    for (const auto& [emitter, covered] : pairs)
-        warnings.push_back(lift_warning(soup, emitter, covered, lift));
+    const double lift = kCoplanarLift * finder.diagonal();
+    for (const auto& [moved, covered] : pairs) warnings.push_back(lift_warning(soup, moved, covered, lift));
     PolygonSoup out = soup;
     // Corners shared by moved polygons of one surface are moved once and stay shared.
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> moved;  // (group, old vertex) -> new
