@@ -24,8 +24,8 @@ std::string percent(double value) {
 std::string run_table(const BenchResults& results) {
     std::string text =
         "| scene | subdivision | patches | links | form factors | solver | steps | mesh s | form factors s | "
-        "solve s | total s | solver error | total error (reference noise) | image error |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "solve s | total s | solver error | total error (reference noise) | image error | pixel error |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const BenchRow& r : results.rows) {
         text += "| " + r.scene + " | " + r.subdivision + " | " + std::to_string(r.patches) + " | " +
                 std::to_string(r.links) + " | " + r.estimator + " | " + r.solver + " | " +
@@ -35,7 +35,7 @@ std::string run_table(const BenchResults& results) {
                 (std::isnan(r.solver_error) ? std::string("n/a | ")
                                             : format("%.2g %% | ", 100.0 * r.solver_error)) +
                 percent(r.total_error) + " (" + percent(r.reference_noise) + ") | " + percent(r.image_error) +
-                " |\n";
+                " | " + percent(r.pixel_error) + " |\n";
     }
     return text;
 }
@@ -79,15 +79,15 @@ std::string bench_csv(const BenchResults& results) {
     std::string text =
         "scene,subdivision,patches,links,patch_size,form_factors,solver,steps,converged,mesh_s,form_factors_"
         "s,"
-        "solve_s,total_s,render_s,solver_error,total_error,reference_noise,image_error\n";
+        "solve_s,total_s,render_s,solver_error,total_error,reference_noise,image_error,pixel_error\n";
     for (const BenchRow& r : results.rows) {
         char line[512];
         std::snprintf(line, sizeof line,
-                      "%s,%s,%zu,%zu,%.9g,%s,%s,%zu,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%.6g,%.6g,%.6g,%.6g\n",
+                      "%s,%s,%zu,%zu,%.9g,%s,%s,%zu,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%.6g,%.6g,%.6g,%.6g,%.6g\n",
                       r.scene.c_str(), r.subdivision.c_str(), r.patches, r.links, r.patch_size,
                       r.estimator.c_str(), r.solver.c_str(), r.steps, r.converged ? 1 : 0, r.mesh_seconds,
                       r.form_factor_seconds, r.solve_seconds, r.seconds(), r.render_seconds, r.solver_error,
-                      r.total_error, r.reference_noise, r.image_error);
+                      r.total_error, r.reference_noise, r.image_error, r.pixel_error);
         text += line;
     }
     return text;

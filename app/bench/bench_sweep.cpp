@@ -104,10 +104,15 @@ class SceneSweep {
         reference_image_ =
             render_reference(base, plan_.image_size, plan_.reference_spp, plan_.reference_spp * 7919);
         const double noise = block_relative_noise(reference_image_.image, reference_image_.standard_error);
+        const double pixel_noise = block_relative_noise(reference_image_.image, reference_image_.standard_error,
+                                                        ImageErrorOptions{.block_size = 1});
         results_.notes.push_back(scene_ + ": reference image " + std::to_string(plan_.image_size) + "² at " +
                                  std::to_string(plan_.reference_spp) + " paths per pixel, " +
                                  format("%.1f s", reference_image_.stats.seconds) +
-                                 format(", noise %.2f %% in the image error's measure", 100 * noise));
+                                 format(", noise %.2f %% in the image error's measure", 100 * noise) +
+                                 format(" and %.2f %% in the pixel error's", 100 * pixel_noise) +
+                                 " (an exact image's errors would be about these; the true error is about "
+                                 "sqrt(error^2 - noise^2))");
         // Radiosity is set beside the path tracer at the default mesh, or the one nearest it.
         const auto nearest_default = std::min_element(
             plan_.size_factors.begin(), plan_.size_factors.end(),
@@ -196,6 +201,7 @@ class SceneSweep {
         const Image image =
             SceneImageRenderer(pipeline, false).render(camera_, plan_.image_size, plan_.image_size);
         row.image_error = block_relative_error(image, reference_image_.image);
+        row.pixel_error = pixel_relative_error(image, reference_image_.image);
         log_(format("%8.3f s  ", row.seconds()) + row.scene + "  " + method + "  " +
              std::to_string(row.patches) + " leaves  " + std::to_string(row.links) + " links" +
              format("  image error %.2f %%", 100 * row.image_error));
@@ -234,6 +240,7 @@ class SceneSweep {
             SceneImageRenderer(pipeline, false).render(camera_, plan_.image_size, plan_.image_size);
         row.render_seconds = seconds_since(render_start);
         row.image_error = block_relative_error(image, reference_image_.image);
+        row.pixel_error = pixel_relative_error(image, reference_image_.image);
         last_image_ = image;
         return row;
     }

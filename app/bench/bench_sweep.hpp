@@ -36,6 +36,8 @@ struct BenchRow {
     double reference_noise = 0.0;
     // Mean relative error over 8 × 8-pixel blocks of the rendered image against the path-traced one.
     double image_error = 0.0;
+    // The same over single pixels, the reference's own pixel noise included (BenchResults::notes give it).
+    double pixel_error = 0.0;
 };
 
 // The path tracer beside radiosity's first image, at one image size.
