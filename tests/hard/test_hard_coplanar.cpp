@@ -133,6 +133,28 @@ TEST(Coplanar, ARugInTheFloorsPlaneIsMovedInFrontOfIt) {
     EXPECT_EQ(heights(surface(built, "floor")), std::make_pair(0.0, 0.0));
 }
 
+// A file of 2000 stacked faces, each its own surface (a bad export): every pair overlaps, 2 million pairs.
+// The search stops after its bound with one warning, and the pairs of names are warned about once each.
+TEST(Coplanar, AStackOfThousandsOfFacesIsBoundedInWorkAndWarnings) {
+    PolygonSoup soup;
+    soup.source = "stack";
+    for (int i = 0; i < 2000; ++i) {
+        const double d = 1e-7 * i;  // not exact duplicates, which are dropped before
+        const auto first = static_cast<std::uint32_t>(soup.positions.size());
+        soup.positions.insert(soup.positions.end(),
+                              {{d, 0, d}, {d, 0, 1 + d}, {1 + d, 0, 1 + d}, {1 + d, 0, d}});
+        soup.groups.push_back({i % 2 ? "odd" : "even", Material{"grey", glm::dvec3(0.5), glm::dvec3(0.0)}});
+        soup.polygons.push_back({{first, first + 1, first + 2, first + 3}, static_cast<std::uint32_t>(i)});
+    }
+    const Scene built = build_scene(soup);
+    int stopped = 0;
+    for (const std::string& w : built.warnings)
+        stopped += w.find("the search stopped there") != std::string::npos;
+    EXPECT_EQ(stopped, 1);
+    EXPECT_LE(lift_warnings(built), 4);  // even over odd, odd over even, even over even, odd over odd
+    EXPECT_GE(lift_warnings(built), 1);
+}
+
 struct Solution {
     Scene scene;
     PatchMesh mesh;

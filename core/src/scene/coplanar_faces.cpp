@@ -25,6 +25,11 @@ namespace {
 constexpr double kPlaneTolerance = 1e-6;
 // Unit normals whose dot product is at least 1 minus this are parallel.
 constexpr double kParallelTolerance = 1e-9;
+// Exact overlap tests before the search stops: a real scene has a few thousand coplanar overlaps at most, and
+// a file of thousands of stacked faces must not take minutes.
+constexpr std::size_t kMaxOverlapTests = 200'000;
+// Pairs of surfaces named in warnings one by one; the rest are counted in one more.
+constexpr std::size_t kListedPairs = 8;
 
 struct PlanarPolygon {
     std::uint32_t polygon = 0;
@@ -68,9 +73,13 @@ class CoplanarFinder {
                 for (const PlanarPolygon& p : neighbour->second) candidates.push_back({&p, true});
             }
             sweep(candidates, out);
+            if (stopped_) break;
         }
         return out;
     }
+
+    // The search stopped at kMaxOverlapTests: overlaps may be left.
+    bool stopped() const { return stopped_; }
 
   private:
     struct Candidate {
@@ -107,6 +116,10 @@ class CoplanarFinder {
                 if (glm::dot(a.normal, b.normal) < 1.0 - kParallelTolerance) continue;
                 if (std::abs(a.offset - b.offset) > tolerance_) continue;
                 if (!boxes_overlap(a.box, b.box)) continue;
+                if (++tests_ > kMaxOverlapTests) {
+                    stopped_ = true;
+                    return;
+                }
                 if (overlap_in_plane(a, b)) out.emplace_back(a.polygon, b.polygon);
             }
         }
@@ -215,6 +228,8 @@ class CoplanarFinder {
     const PolygonSoup& soup_;
     double diagonal_ = 0.0;
     double tolerance_ = 0.0;
+    mutable std::size_t tests_ = 0;
+    mutable bool stopped_ = false;
 };
 
 // Per surface (group), the area of its polygons: the smaller of two coplanar surfaces is the one on top.
@@ -250,12 +265,20 @@ std::string lift_warning(const PolygonSoup& soup, std::uint32_t moved_group, std
     return out.str();
 }
 
+std::string stopped_warning(const PolygonSoup& soup) {
+    return soup.source + ": more than " + std::to_string(kMaxOverlapTests) +
+           " pairs of coplanar faces to compare; the search stopped there, and faces it did not reach may "
+           "still "
+           "lie in one another's plane";
+}
+
 }  // namespace
 
 std::optional<PolygonSoup> lift_coplanar_faces(const PolygonSoup& soup, std::vector<std::string>& warnings) {
     if (soup.groups.size() < 2) return std::nullopt;
     const CoplanarFinder finder(soup);
     const std::vector<std::pair<std::uint32_t, std::uint32_t>> overlaps = finder.overlaps();
+    if (overlaps.empty() && finder.stopped()) warnings.push_back(stopped_warning(soup));
     if (overlaps.empty()) return std::nullopt;
 
     const std::vector<double> area = group_areas(soup);
@@ -270,7 +293,23 @@ std::optional<PolygonSoup> lift_coplanar_faces(const PolygonSoup& soup, std::vec
     }
 
     const double lift = kCoplanarLift * finder.diagonal();
-    for (const auto& [moved, covered] : pairs) warnings.push_back(lift_warning(soup, moved, covered, lift));
+    // One warning per pair of names (a file may repeat a group's name), the first kListedPairs of them.
+    std::set<std::pair<std::string, std::string>> named;
+    std::size_t unlisted = 0;
+    for (const auto& [moved, covered] : pairs) {
+        if (!named.emplace(soup.groups[moved].name, soup.groups[covered].name).second) continue;
+        if (named.size() <= kListedPairs) {
+            warnings.push_back(lift_warning(soup, moved, covered, lift));
+        } else {
+            ++unlisted;
+        }
+    }
+    if (unlisted > 0) {
+        warnings.push_back(soup.source + ": " + std::to_string(unlisted) +
+                           " more pairs of surfaces lie in one plane, facing the same way, and overlap; the "
+                           "covering one of each is moved likewise");
+    }
+    if (finder.stopped()) warnings.push_back(stopped_warning(soup));
     PolygonSoup out = soup;
     // Corners shared by moved polygons of one surface are moved once and stay shared.
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> moved;  // (group, old vertex) -> new
