@@ -424,13 +424,7 @@ void SolverWorker::start_solver(const Reset& reset, bool geometry_changed) {
     SolverOptions solver_options = rad::solver_options(options_.solver, pipeline_->patches().size());
     if (reset.from_emission) solver_options.initial = InitialGuess::emission;
     pipeline_->restart_solver(solver_method(options_.solver), solver_options);
-    step_offset_ = 0;
-    start_bounce_history();
-    // Step 0: the emission (or the first guess) is the newest light.
-    add_bounce(pipeline_->solver().display_solution(),
-               direct_light_share(display_, pipeline_->solver().display_solution()));
-    history_residual_.clear();
-    history_unshot_.clear();
+    start_history_from_solver();
     set_can_step(!pipeline_->solver().report().finished());
     publish(geometry_changed, true);
     std::lock_guard lock(mutex_);
@@ -458,12 +452,7 @@ void SolverWorker::edit_outside_light(const std::pair<std::string, std::string>&
 void SolverWorker::run_after_edit() {
     // The emitters' direct light at the vertices, and a textured surface's emission, change with an edit.
     display_ = pipeline_->build_display(options_.display);
-    step_offset_ = 0;
-    start_bounce_history();
-    add_bounce(pipeline_->solver().display_solution(),
-               direct_light_share(display_, pipeline_->solver().display_solution()));
-    history_residual_.clear();
-    history_unshot_.clear();
+    start_history_from_solver();
     const bool can_step = !pipeline_->solver().report().finished();
     set_can_step(can_step);
     {
@@ -540,6 +529,16 @@ void SolverWorker::switch_colour_mode(ColourMode mode) {
             vertex_radiance(display_, bounce_history_[i], bounce_direct_share_[i]));
     }
     publish(true, true);
+}
+
+void SolverWorker::start_history_from_solver() {
+    step_offset_ = 0;
+    start_bounce_history();
+    // Step 0: the solver's first radiosity (the emission, or its first guess) is the newest light.
+    add_bounce(pipeline_->solver().display_solution(),
+               direct_light_share(display_, pipeline_->solver().display_solution()));
+    history_residual_.clear();
+    history_unshot_.clear();
 }
 
 void SolverWorker::start_bounce_history() {

@@ -106,6 +106,8 @@ class SolverWorker {
     void switch_colour_mode(ColourMode mode);
     void set_can_step(bool can_step);
     void start_bounce_history();
+    // A fresh history whose step 0 is the solver's radiosity as it starts, with no plots yet.
+    void start_history_from_solver();
     // `direct_share`: how much of the emitters' direct light the step added (direct_light_share's rise).
     void add_bounce(std::vector<glm::dvec3> bounce, double direct_share);
     // Hands the display mesh (when it changed) and the colours (when the solver has some) to the render
