@@ -337,6 +337,7 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
     if (!saved && pipeline_ && solver_ready_ && scene == shown_scene_) {
         pipeline->prepare(progress_.get());
         show_pipeline(std::move(pipeline), options, std::nullopt);
+        display_ = pipeline_->build_display(options_.display);
         start_solver(Reset{options_.solver.method, options_.solver.tolerance, false}, true);
         return;
     }

@@ -238,6 +238,26 @@ TEST(ViewerWorker, ReMeshingKeepsTheSolutionShownUntilTheNewOneIsReadyAndACancel
     EXPECT_EQ(worker.snapshot().radiance->step, 3u);
 }
 
+// A re-mesh that runs to its end shows the new mesh: the geometry and the colours the new patches give, one
+// colour per vertex, and it steps on.
+TEST(ViewerWorker, AFinishedReMeshShowsTheNewMeshAndStepsOn) {
+    SolverWorker worker(cornell(100.0));
+    worker.request_steps(2);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot coarse = worker.snapshot();
+    worker.request_rebuild(cornell(70.0));
+    worker.request_steps(2);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot fine = worker.snapshot();
+    EXPECT_TRUE(fine.error.empty()) << fine.error;
+    ASSERT_TRUE(fine.geometry && fine.radiance && coarse.geometry);
+    EXPECT_GT(fine.statistics.patches, coarse.statistics.patches);
+    EXPECT_GT(fine.geometry->positions.size(), coarse.geometry->positions.size());
+    EXPECT_EQ(fine.radiance->cumulative.size(), fine.geometry->positions.size());
+    EXPECT_EQ(fine.radiance->step, 2u);
+    expect_near(fine.radiance->cumulative, radiance_after(cornell(70.0), 2));
+}
+
 TEST(ViewerWorker, AFileThatCannotBeOpenedStartsTheInterruptedFormFactorsAgain) {
     PipelineOptions options = cornell(12.0);
     options.subdivision.method = "uniform";
