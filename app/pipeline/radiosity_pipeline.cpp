@@ -331,7 +331,6 @@ DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options) cons
 }
 
 void RadiosityPipeline::add_direct_light(DisplayMesh& display) const {
-    if (!built_.transport && !saved_) return;
     const PatchMesh& mesh = patches();
     const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, mesh);
     if (!draws_vertex_direct_light(mesh, emitted)) return;
@@ -339,6 +338,7 @@ void RadiosityPipeline::add_direct_light(DisplayMesh& display) const {
     VertexDirectLightInput input{
         .patches = &mesh, .rays = &rays, .emitted = emitted, .seed = options_.form_factors.seed};
     std::vector<glm::dvec3> direct;
+    std::vector<double> area;
     if (built_.transport) {
         const Transport& t = *built_.transport;
         direct = element_direct();
@@ -346,37 +346,27 @@ void RadiosityPipeline::add_direct_light(DisplayMesh& display) const {
         input.reflectance = t.reflectance;
         input.area = t.area;
         input.patch_direct = direct;
-    } else {
+    } else if (saved_) {
         input.emission = saved_->emission;
         input.reflectance = saved_->reflectance;
         input.area = saved_->area;
         input.patch_direct = saved_->direct;
+    } else {
+        // Before the transport (a preview while it is built): no patch holds any of the light yet.
+        direct.assign(mesh.size(), glm::dvec3(0.0));
+        area.resize(mesh.size());
+        for (std::size_t q = 0; q < mesh.size(); ++q) area[q] = mesh.patches[q].area;
+        input.emission = emitted;
+        input.reflectance = display_texturing().reflectance;
+        input.area = area;
+        input.patch_direct = direct;
+        input.keep_patch_means = false;
     }
     add_vertex_direct_light(display, input);
 }
 
 std::vector<glm::dvec3> RadiosityPipeline::preview_radiosity() const {
     return emitted_radiosity(loaded_.scene, patches());
-}
-
-void RadiosityPipeline::add_preview_direct_light(DisplayMesh& display) const {
-    const PatchMesh& mesh = patches();
-    const std::vector<glm::dvec3> emitted = preview_radiosity();
-    if (!draws_vertex_direct_light(mesh, emitted)) return;
-    const RayScene rays(mesh);
-    const DisplayTexturing texturing = display_texturing();
-    std::vector<double> area(mesh.size());
-    for (std::size_t q = 0; q < mesh.size(); ++q) area[q] = mesh.patches[q].area;
-    const std::vector<glm::dvec3> unknown(mesh.size(), glm::dvec3(0.0));
-    add_vertex_direct_light(display, {.patches = &mesh,
-                                      .rays = &rays,
-                                      .emitted = emitted,
-                                      .emission = emitted,
-                                      .reflectance = texturing.reflectance,
-                                      .area = area,
-                                      .patch_direct = unknown,
-                                      .seed = options_.form_factors.seed,
-                                      .keep_patch_means = false});
 }
 
 DisplayTexturing RadiosityPipeline::display_texturing() const {

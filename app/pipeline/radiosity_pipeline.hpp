@@ -100,16 +100,14 @@ class RadiosityPipeline {
     Subdivision subdivision() const { return subdivision_; }
     // Built on first use, so `solve` never pays for it.
     const DisplayMesh& display() const;
-    // A display mesh of patches() with these options; in smooth mode, once there is a transport or a saved
-    // solution, with the emitters' direct light at its vertices (DisplayOptions::direct_light_at_vertices).
+    // A display mesh of patches() with these options; in smooth mode with the emitters' direct light at its
+    // vertices (DisplayOptions::direct_light_at_vertices), as add_direct_light adds it.
     DisplayMesh build_display(const DisplayOptions& options) const;
-    // Adds the emitters' direct light to the vertices of a display mesh of patches() (smooth mode), once
-    // there is a transport or a saved solution; else leaves it as it is.
+    // Adds the emitters' direct light to the vertices of a display mesh of patches(). With a transport or a
+    // saved solution, each patch's drawn mean is kept to the direct light its radiosity holds. Before
+    // prepare (a preview while the transport is built) no patch holds any of it yet: each vertex keeps its
+    // own value, to be shown with direct_share 1 over preview_radiosity().
     void add_direct_light(DisplayMesh& display) const;
-    // Before prepare, while the transport is built: the emitters' direct light at the vertices of a display
-    // mesh of patches() as it is known without form factors (no patch holds any of it yet), so a viewer can
-    // show the scene lit, with direct_share 1 over preview_radiosity().
-    void add_preview_direct_light(DisplayMesh& display) const;
     // E per patch of patches(): the radiosity before any light is reflected.
     std::vector<glm::dvec3> preview_radiosity() const;
     // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the

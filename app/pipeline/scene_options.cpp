@@ -18,9 +18,8 @@ std::string scene_help() {
     std::string names;
     for (const BuiltinSceneInfo& scene : builtin_scenes()) names += scene.name + ", ";
     return "Scene: a .obj (with its .mtl), .ply, .gltf or .glb file, or builtin:NAME (" + names +
-           "or furnace-N: a closed room of balls of about N faces, e.g. furnace-100k, furnace-1m, where B = "
-           "2 "
-           "everywhere); render and view also take a saved solution, FILE.radiosity";
+           "or furnace-N: a closed room of balls of about N faces, e.g. furnace-100k, furnace-1m, where "
+           "B = 2 everywhere); render and view also take a saved solution, FILE.radiosity";
 }
 
 }  // namespace

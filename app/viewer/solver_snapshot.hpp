@@ -68,7 +68,9 @@ struct ViewerStatistics {
     std::string remesh_unavailable;     // why those cannot be recomputed (the scene file is gone), or empty
     std::uint64_t opened = 0;           // scenes and saved solutions opened so far
     std::vector<std::string> warnings;  // the loader's about the scene shown (clamped values, skipped faces)
-    std::vector<ViewerMaterial> materials;  // in the order of their first surface
+    // In the order of their first surface; shared, as the statistics are copied every frame and a scene may
+    // have thousands of materials. Made again only when a scene opens or a material is edited.
+    std::shared_ptr<const std::vector<ViewerMaterial>> materials;
     std::size_t patches = 0;
     std::size_t interactions = 0;  // the transport's form factors, or links
     std::string interaction_name;  // "form factors", "links"

@@ -52,24 +52,24 @@ std::string missing_scene(const std::string& source) {
 }
 
 // The scene's materials by name, in the order of their first surface.
-std::vector<ViewerMaterial> scene_materials(const Scene& scene) {
-    std::vector<ViewerMaterial> materials;
+std::shared_ptr<const std::vector<ViewerMaterial>> scene_materials(const Scene& scene) {
+    auto materials = std::make_shared<std::vector<ViewerMaterial>>();
     for (const Surface& surface : scene.surfaces) {
         const Material& m = surface.material;
-        auto found = std::find_if(materials.begin(), materials.end(),
+        auto found = std::find_if(materials->begin(), materials->end(),
                                   [&](const ViewerMaterial& v) { return v.name == m.name; });
-        if (found == materials.end()) {
-            materials.push_back({m.name, m.reflectance, m.emission, m.texture != nullptr, 0.0});
-            found = materials.end() - 1;
+        if (found == materials->end()) {
+            materials->push_back({m.name, m.reflectance, m.emission, m.texture != nullptr, 0.0});
+            found = materials->end() - 1;
         }
         found->area += surface_area(surface.mesh);
     }
     return materials;
 }
 
-std::vector<std::uint32_t> triangle_materials(const Scene& scene, const PatchMesh& patches,
-                                              const DisplayMesh& display) {
-    const std::vector<ViewerMaterial> materials = scene_materials(scene);
+std::vector<std::uint32_t> triangle_materials(const Scene& scene,
+                                              const std::vector<ViewerMaterial>& materials,
+                                              const PatchMesh& patches, const DisplayMesh& display) {
     std::vector<std::uint32_t> of_surface(scene.surfaces.size(), 0);
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const auto found = std::find_if(materials.begin(), materials.end(), [&](const ViewerMaterial& v) {
@@ -379,6 +379,7 @@ void SolverWorker::show_pipeline(std::unique_ptr<RadiosityPipeline> pipeline, co
     saved_options_ = std::move(saved_options);
     remesh_unavailable_ = saved_options_ ? missing_scene(saved_options_->scene.scene) : std::string();
     ++opened_;
+    materials_ = scene_materials(pipeline_->loaded().scene);
     // The previous scene's plots and bounces are not this one's.
     start_bounce_history();
     history_residual_.clear();
@@ -392,12 +393,14 @@ void SolverWorker::show_pipeline(std::unique_ptr<RadiosityPipeline> pipeline, co
 
 void SolverWorker::show_preview() {
     // The emission at once, then the emitters' direct light as soon as it is traced, while form factors run.
-    display_ = pipeline_->build_display(options_.display);
+    DisplayOptions emission_only = options_.display;
+    emission_only.direct_light_at_vertices = false;
+    display_ = pipeline_->build_display(emission_only);
     publish(true, true);
     publish_statistics();
     if (options_.display.mode != ColourMode::smooth || !options_.display.direct_light_at_vertices) return;
     progress_->begin("direct light", 0);
-    pipeline_->add_preview_direct_light(display_);
+    pipeline_->add_direct_light(display_);
     if (!display_.direct.vertex.empty()) publish(false, true);
 }
 
@@ -437,6 +440,7 @@ void SolverWorker::edit_material(const MaterialEdit& edit) {
     pipeline_->prepare(progress_.get());
     solver_ready_ = true;
     pipeline_->edit_material(edit.name, edit.reflectance, edit.emitted_radiance);
+    materials_ = scene_materials(pipeline_->loaded().scene);
     run_after_edit();
 }
 
@@ -475,9 +479,14 @@ void SolverWorker::write(const Write& file) {
         } else if (!export_format(file.path)) {
             throw InputError(file.path + ": save as .radiosity, or export as .ply, .gltf or .glb");
         } else {
-            const std::vector<glm::dvec3> radiosity = shown_radiosity();
-            export_scene(file.path, display_, vertex_radiance(display_, radiosity, shown_direct_share()),
-                         ExportOptions{.exposure = file.exposure});
+            // The colours drawn now, published with display_.
+            std::shared_ptr<const ViewerRadiance> shown;
+            {
+                std::lock_guard lock(mutex_);
+                shown = snapshot_.radiance;
+            }
+            if (!shown) throw InputError(file.path + ": nothing to export before the scene is shown");
+            export_scene(file.path, display_, shown->cumulative, ExportOptions{.exposure = file.exposure});
         }
     } catch (const InputError& e) {
         error = input_error_message(e);
@@ -579,7 +588,7 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
         geometry->outline = patch_outline(display_);
         geometry->texcoords = display_.texcoords;
         geometry->triangle_material =
-            triangle_materials(pipeline_->loaded().scene, pipeline_->patches(), display_);
+            triangle_materials(pipeline_->loaded().scene, *materials_, pipeline_->patches(), display_);
         geometry->textured = display_.textured;
         geometry->bounds = bounding_box(pipeline_->loaded().scene);
         geometry->scene_camera = scene_camera(pipeline_->loaded().scene);
@@ -614,7 +623,7 @@ void SolverWorker::publish_statistics() {
         statistics.remesh_unavailable = remesh_unavailable_;
         statistics.opened = opened_;
         statistics.warnings = pipeline_->loaded().scene.warnings;
-        statistics.materials = scene_materials(pipeline_->loaded().scene);
+        statistics.materials = materials_;
         statistics.patches = pipeline_->patches().size();
         statistics.subdivision = std::string(subdivision_name(pipeline_->subdivision()));
         statistics.patch_size = pipeline_->loaded().patch_size;

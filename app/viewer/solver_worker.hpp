@@ -158,7 +158,8 @@ class SolverWorker {
     std::string shown_scene_;  // the scene drawn (a saved solution's own), which keeps the view when reopened
     std::uint64_t scene_version_ = 0;
     std::uint64_t opened_ = 0;
-    std::optional<PipelineOptions> saved_options_;  // see ViewerStatistics::saved_options
+    std::shared_ptr<const std::vector<ViewerMaterial>> materials_;  // the scene's, as shown
+    std::optional<PipelineOptions> saved_options_;                  // see ViewerStatistics::saved_options
     std::string remesh_unavailable_;
     // A saved solution continues from its own step count (the pipeline's solver counts from 0 again).
     std::size_t step_offset_ = 0;

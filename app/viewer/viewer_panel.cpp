@@ -398,11 +398,11 @@ void ViewerPanel::select_material(std::uint32_t index) {
 }
 
 void ViewerPanel::draw_material(SolverWorker& worker, const ViewerStatistics& statistics) {
-    const std::vector<ViewerMaterial>& materials = statistics.materials;
-    if (materials.empty()) {
+    if (!statistics.materials || statistics.materials->empty()) {
         ImGui::TextDisabled("no scene yet");
         return;
     }
+    const std::vector<ViewerMaterial>& materials = *statistics.materials;
     if (material_ < 0 || material_ >= static_cast<int>(materials.size())) {
         material_ = 0;
         material_loaded_ = false;

@@ -17,7 +17,7 @@ struct PanelRequests {
     bool reset_view = false;
     bool copy_camera = false;
     bool show_help = false;
-    bool add_bookmark = false;                // keep the view as it is now
+    bool add_bookmark = false;                  // keep the view as it is now
     std::optional<std::size_t> go_to_bookmark;  // ViewSettings::bookmarks' index
     // The width the panel takes at the window's left edge, in Dear ImGui's units (the window's, not its
     // framebuffer's); 0 while it is collapsed to its title bar. The 3D view is drawn beside it.
