@@ -87,7 +87,7 @@ std::vector<std::uint32_t> triangle_materials(const Scene& scene,
 
 SolverWorker::SolverWorker(const PipelineOptions& options, std::function<void()> on_change)
     : on_change_(std::move(on_change)), arena_(work_threads()) {
-    pending_rebuild_ = options;
+    pending_rebuild_ = Rebuild{options, 0};
     thread_ = std::thread([this] { loop(); });
 }
 
@@ -101,13 +101,13 @@ SolverWorker::~SolverWorker() {
     thread_.join();
 }
 
-void SolverWorker::request_rebuild(const PipelineOptions& options) {
+void SolverWorker::request_rebuild(const PipelineOptions& options, std::size_t steps) {
     {
         std::lock_guard lock(mutex_);
         if (progress_) progress_->cancel();  // the old scene's form factors are no longer wanted
         // Started again should the new scene not open.
         if (current_rebuild_ && !interrupted_rebuild_) interrupted_rebuild_ = current_rebuild_;
-        pending_rebuild_ = options;
+        pending_rebuild_ = Rebuild{options, steps};
     }
     wake_.notify_all();
 }
@@ -211,7 +211,7 @@ bool SolverWorker::has_work() const {
 
 void SolverWorker::loop() {
     for (;;) {
-        std::optional<PipelineOptions> rebuild_options;
+        std::optional<Rebuild> rebuild_request;
         std::optional<ColourMode> colour_mode;
         std::optional<Reset> reset;
         std::optional<MaterialEdit> edit;
@@ -226,9 +226,9 @@ void SolverWorker::loop() {
             // Order matters: a new scene makes every other request moot; a display switch and a reset keep
             // the steps asked for after them.
             if (pending_rebuild_) {
-                rebuild_options = std::move(pending_rebuild_);
+                rebuild_request = std::move(pending_rebuild_);
                 pending_rebuild_.reset();
-                current_rebuild_ = rebuild_options;
+                current_rebuild_ = rebuild_request;
             } else if (pending_colour_mode_) {
                 colour_mode = pending_colour_mode_;
                 pending_colour_mode_.reset();
@@ -252,8 +252,8 @@ void SolverWorker::loop() {
         bool finished = false;
         try {
             arena_.execute([&] {
-                if (rebuild_options) {
-                    rebuild(*rebuild_options);
+                if (rebuild_request) {
+                    rebuild(*rebuild_request);
                 } else if (colour_mode) {
                     switch_colour_mode(*colour_mode);
                 } else if (reset) {
@@ -294,7 +294,8 @@ void SolverWorker::changed() {
     if (on_change_) on_change_();
 }
 
-void SolverWorker::rebuild(const PipelineOptions& options) {
+void SolverWorker::rebuild(const Rebuild& request) {
+    const PipelineOptions& options = request.options;
     progress_->begin("loading and meshing", 0);
     // A saved solution is shown at once; its transport is rebuilt behind it, so stepping can continue.
     const bool saved = is_saved_solution_path(options.scene.scene);
@@ -330,6 +331,7 @@ void SolverWorker::rebuild(const PipelineOptions& options) {
         interrupted_rebuild_.reset();
         if (pipeline_)
             running_ = false;  // the previous scene's run ends (a run asked for at the start waits)
+        pending_steps_ += request.steps;
     }
     const std::string scene = saved_options ? saved_options->scene.scene : options.scene.scene;
     // The same scene again (another patch size, subdivision or form-factor method): its solution stays

@@ -37,8 +37,10 @@ class SolverWorker {
     SolverWorker(const SolverWorker&) = delete;
     SolverWorker& operator=(const SolverWorker&) = delete;
 
-    // Loads (another scene, or the same at another patch size or form-factor method) and recomputes.
-    void request_rebuild(const PipelineOptions& options);
+    // Loads (another scene, or the same at another patch size or form-factor method) and recomputes; once the
+    // scene has opened, takes `steps` solver steps (a file that does not open takes none from the scene
+    // shown).
+    void request_rebuild(const PipelineOptions& options, std::size_t steps = 0);
     void request_steps(std::size_t count);
     // Steps until the solver finishes, or until paused.
     void set_running(bool running);
@@ -70,6 +72,10 @@ class SolverWorker {
     std::size_t pending_steps() const;
 
   private:
+    struct Rebuild {
+        PipelineOptions options;
+        std::size_t steps = 0;  // asked for with it, taken once it has opened
+    };
     struct Reset {
         std::string method;
         double tolerance;
@@ -94,7 +100,7 @@ class SolverWorker {
     void run_after_edit();
     void write(const Write& write);
     bool has_work() const;  // with mutex_ held
-    void rebuild(const PipelineOptions& options);
+    void rebuild(const Rebuild& request);
     // The newly loaded pipeline becomes the one shown; a new scene's is not prepared yet.
     void show_pipeline(std::unique_ptr<RadiosityPipeline> pipeline, const PipelineOptions& options,
                        std::optional<PipelineOptions> saved_options);
@@ -124,9 +130,9 @@ class SolverWorker {
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     // Requests, guarded by mutex_.
-    std::optional<PipelineOptions> pending_rebuild_;
-    std::optional<PipelineOptions> current_rebuild_;      // the rebuild running now
-    std::optional<PipelineOptions> interrupted_rebuild_;  // cut short by a newer one
+    std::optional<Rebuild> pending_rebuild_;
+    std::optional<Rebuild> current_rebuild_;      // the rebuild running now
+    std::optional<Rebuild> interrupted_rebuild_;  // cut short by a newer one
     // Rebuilds, this one included, that keep the error shown: a failed load's, while the work it cut short
     // starts again.
     int keep_error_jobs_ = 0;

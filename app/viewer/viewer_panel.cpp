@@ -189,9 +189,8 @@ void ViewerPanel::open_scene(SolverWorker& worker, const std::string& path) {
     scene_path_ = path;
     options_ = options_for_new_scene(options_, path);
     show_options();
-    worker.request_rebuild(options_);
-    // The direct light, once the form factors are known; a saved solution is shown at its own step.
-    if (!is_saved_solution_path(path)) worker.request_steps(1);
+    // Opened at the first bounce, the direct light; a saved solution is shown at its own step.
+    worker.request_rebuild(options_, is_saved_solution_path(path) ? 0 : 1);
 }
 
 void ViewerPanel::use_scene_defaults() {
@@ -388,8 +387,7 @@ void ViewerPanel::remesh(SolverWorker& worker, const ViewerStatistics& statistic
     options_.scene.scene = saved                      ? saved->scene.scene
                            : statistics.scene.empty() ? scene_path_
                                                       : statistics.scene;
-    worker.request_rebuild(options_);
-    worker.request_steps(1);
+    worker.request_rebuild(options_, 1);
 }
 
 void ViewerPanel::select_material(std::uint32_t index) {

@@ -41,21 +41,15 @@ TEST(SceneCamera, AnOpenRoomIsSeenThroughItsOpening) {
 TEST(SceneCamera, AClosedBoxKeepsTheUsualView) {
     const test::TempDir folder;
     folder.write("box.mtl", "newmtl white\nKd 0.5 0.5 0.5\nKe 1 1 1\n");
+    const std::string header = std::string("mtllib box.mtl\nusemtl white\n") + test::kInwardUnitCubeCorners;
     const std::string path =
-        folder.write("box.obj",
-                     "mtllib box.mtl\nusemtl white\n"
-                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                     "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 4 3 7 8\nf 1 4 8 5\nf 2 6 7 3\n");
+        folder.write("box.obj", header + test::kInwardUnitCubeFirstFace + test::kInwardUnitCubeOtherFaces);
     const Scene scene = load_scene(path);
     ASSERT_FALSE(scene.camera);
     const Camera usual = frame_bounding_box(bounding_box(scene));
     EXPECT_NEAR(glm::length(scene_camera(scene).eye - usual.eye), 0.0, 1e-9);
     // Without its back wall (the first face, at z = 0) the box is open towards -z, and seen from there.
-    const std::string open =
-        folder.write("open.obj",
-                     "mtllib box.mtl\nusemtl white\n"
-                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                     "f 5 8 7 6\nf 1 5 6 2\nf 4 3 7 8\nf 1 4 8 5\nf 2 6 7 3\n");
+    const std::string open = folder.write("open.obj", header + test::kInwardUnitCubeOtherFaces);
     EXPECT_LT(scene_camera(load_scene(open)).eye.z, 0.0);
 }
 

@@ -21,6 +21,14 @@ std::string read_file_text(const std::filesystem::path& path);
 // The full path of `name` found in PATH, or empty.
 std::string find_in_path(const std::string& name);
 
+// The corners and faces of an OBJ unit cube [0, 1]³ with every face facing inwards (a closed room); its
+// first face is the one at z = 0.
+inline constexpr const char* kInwardUnitCubeCorners =
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+inline constexpr const char* kInwardUnitCubeFirstFace = "f 1 2 3 4\n";
+inline constexpr const char* kInwardUnitCubeOtherFaces =
+    "f 5 8 7 6\nf 1 5 6 2\nf 4 3 7 8\nf 1 4 8 5\nf 2 6 7 3\n";
+
 // A fresh directory under the build tree's temp space, removed at the end of the test.
 class TempDir {
   public:

@@ -92,11 +92,9 @@ TEST(ViewerWindow, AutoExposureShowsABrightFurnaceAsMiddleGrey) {
     ASSERT_FALSE(xvfb_run.empty()) << "xvfb-run not found: scripts/install-deps.sh installs xvfb";
     const test::TempDir folder;
     folder.write("furnace.mtl", "newmtl glow\nKd 0.5 0.5 0.5\nKe 250 250 250\n");
-    const std::string scene =
-        folder.write("furnace.obj",
-                     "mtllib furnace.mtl\nusemtl glow\n"
-                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                     "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 4 3 7 8\nf 1 4 8 5\nf 2 6 7 3\n");
+    const std::string scene = folder.write(
+        "furnace.obj", std::string("mtllib furnace.mtl\nusemtl glow\n") + test::kInwardUnitCubeCorners +
+                           test::kInwardUnitCubeFirstFace + test::kInwardUnitCubeOtherFaces);
     auto shot = [&](const std::string& name, std::vector<std::string> more) {
         const std::string path = (folder.path() / name).string();
         std::vector<std::string> args{"-a",

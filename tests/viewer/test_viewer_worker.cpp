@@ -258,6 +258,25 @@ TEST(ViewerWorker, AFinishedReMeshShowsTheNewMeshAndStepsOn) {
     expect_near(fine.radiance->cumulative, radiance_after(cornell(70.0), 2));
 }
 
+// The step asked for with a scene (the panel opens scenes at their first bounce) is taken once the scene has
+// opened: a file that cannot be opened leaves the scene shown as it was, not a step further.
+TEST(ViewerWorker, TheStepsAskedWithASceneThatDoesNotOpenAreNotTaken) {
+    SolverWorker worker(cornell(100.0));
+    worker.request_steps(2);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    PipelineOptions missing = cornell(100.0);
+    missing.scene.scene = "/nonexistent/scene.obj";
+    worker.request_rebuild(missing, 1);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(60)));
+    EXPECT_TRUE(worker.snapshot().bad_input);
+    ASSERT_TRUE(worker.snapshot().radiance);
+    EXPECT_EQ(worker.snapshot().radiance->step, 2u);
+    worker.request_rebuild(cornell(70.0), 1);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    ASSERT_TRUE(worker.snapshot().radiance);
+    EXPECT_EQ(worker.snapshot().radiance->step, 1u);
+}
+
 TEST(ViewerWorker, AFileThatCannotBeOpenedStartsTheInterruptedFormFactorsAgain) {
     PipelineOptions options = cornell(12.0);
     options.subdivision.method = "uniform";

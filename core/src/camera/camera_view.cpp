@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "rad/geometry/polygon.hpp"
+
 namespace rad {
 
 namespace {
@@ -14,23 +16,20 @@ namespace {
 // From the centre towards the eye: in front (+z), a little from above and the right.
 const glm::dvec3 kFrontView = glm::normalize(glm::dvec3(0.35, 0.3, 1.0));
 
-// Twice the area of a face along its front normal (Newell's sum over its corners), and its centroid.
+// Twice the area of a face along its front normal, and its centroid.
 struct FaceArea {
     glm::dvec3 vector{0.0};
     glm::dvec3 centre{0.0};
 };
 
 FaceArea face_area_vector(const SurfaceMesh& mesh, SurfaceMesh::FaceHandle face) {
+    std::vector<glm::dvec3> corners;
+    for (auto v : mesh.fv_range(face)) corners.push_back(to_glm(mesh.point(v)));
     FaceArea area;
-    int corners = 0;
-    for (auto edge : mesh.fh_range(face)) {
-        const glm::dvec3 a = to_glm(mesh.point(mesh.from_vertex_handle(edge)));
-        const glm::dvec3 b = to_glm(mesh.point(mesh.to_vertex_handle(edge)));
-        area.vector += glm::cross(a, b);
-        area.centre += a;
-        ++corners;
-    }
-    if (corners > 0) area.centre /= double(corners);
+    if (corners.empty()) return area;
+    area.vector = newell_normal(corners);
+    for (const glm::dvec3& c : corners) area.centre += c;
+    area.centre /= double(corners.size());
     return area;
 }
 
