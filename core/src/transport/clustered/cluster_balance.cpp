@@ -95,7 +95,7 @@ std::vector<double> pooled_bias(const ClusterHierarchy& h, std::span<const doubl
 // Per leaf, the reach of its exposed part: the links' row sum corrected by the pooled bias, then moved
 // towards the leaf's own measurement by what exceeds twice its standard error (a closed scene's rays all
 // arrive: exactly 1), over the exposed share (the links and the measurement both count the covered part as
-// blocked).
+// blocked); for an emitter's leaves, what its direct light delivers.
 std::vector<double> reach_targets(const ClusterHierarchy& h) {
     const std::size_t n = h.leaves.size();
     std::vector<double> links;
@@ -111,6 +111,11 @@ std::vector<double> reach_targets(const ClusterHierarchy& h) {
         const double whole = prior + std::copysign(excess, measured - prior);
         target[k] = h.exposed[k] > 0.0f ? std::min(1.0, whole / static_cast<double>(h.exposed[k])) : 0.0;
     }
+    // An emitter's leaves send their emission by the direct light's column: their links reach as far.
+    if (!h.direct.empty())
+        for (std::size_t k = 0; k < n; ++k)
+            if (const std::uint32_t c = h.direct.leaf_column[k]; c != ClusterHierarchy::DirectLight::kNone)
+                target[k] = static_cast<double>(h.direct.share[c]);
     return target;
 }
 

@@ -15,8 +15,10 @@
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
 #include "transport/clustered/cluster_balance.hpp"
+#include "transport/clustered/cluster_direct_light.hpp"
 #include "transport/clustered/cluster_flow.hpp"
 #include "transport/clustered/cluster_geometry.hpp"
+#include "transport/clustered/cluster_shadow_split.hpp"
 #include "transport/clustered/clustered_refine.hpp"
 #include "transport/external/outside_light.hpp"
 #include "transport/patch_materials.hpp"
@@ -77,13 +79,26 @@ void index_links(ClusterHierarchy& h) {
     h.receiver_runs.push_back(static_cast<std::uint32_t>(h.links.size()));
 }
 
+// How many leaves the splitting along shadows may add: as many as there are, within what the memory budget
+// leaves (a leaf's element, state and row of direct light).
+std::size_t shadow_leaf_allowance(const ClusterHierarchy& h, std::size_t budget, std::size_t emitters) {
+    const std::size_t per_leaf = kClusteredElementBytes + emitters * 2 * sizeof(float);
+    const std::size_t used = h.memory_bytes() + h.leaves.size() * per_leaf;
+    const std::size_t room = budget == 0 ? h.leaves.size() : (budget > used ? (budget - used) / per_leaf : 0);
+    return std::min(h.leaves.size(), room);
+}
+
 // The first round's tolerance, relative to the requested one.
 constexpr double kFirstRoundTolerance = 4.0;
 // Jacobi steps of the rough solution between the rounds.
 constexpr int kRoughSteps = 24;
 
-// A few Jacobi steps over the links as they stand (unbalanced), then the luminance of every node.
-RadiosityEstimate rough_solution(const ClusterHierarchy& h) {
+// A few Jacobi steps over the links as they stand (unbalanced), then the luminance of every node. Where the
+// direct light will carry the emitters' light (`aimed`: per base patch), a source's estimate is its
+// radiosity less what it emits, so its links are refined for the light it reflects; the scene's mean keeps
+// the emission.
+RadiosityEstimate rough_solution(const ClusterHierarchy& h, const Scene& scene,
+                                 std::span<const std::uint8_t> aimed) {
     const std::size_t n = h.leaves.size();
     std::vector<glm::dvec3> b(n), gathered(n);
     for (std::size_t k = 0; k < n; ++k) b[k] = h.emission[h.leaves[k]];
@@ -96,13 +111,18 @@ RadiosityEstimate rough_solution(const ClusterHierarchy& h) {
     NodeValues& values = buffers.values;
     pull(h, b, values);
     RadiosityEstimate estimate;
+    estimate.mean = h.clusters.empty() ? 0.0 : luminance(values.cluster[0]);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Element& leaf = h.tree[h.leaves[k]];
+        if (aimed[leaf.base_patch]) b[k] -= scene.surfaces[leaf.shape.surface].material.emitted_radiosity();
+    }
+    pull(h, b, values);
     estimate.element.resize(values.element.size());
     estimate.cluster.resize(values.cluster.size());
     for (std::size_t e = 0; e < values.element.size(); ++e)
         estimate.element[e] = luminance(values.element[e]);
     for (std::size_t c = 0; c < values.cluster.size(); ++c)
         estimate.cluster[c] = luminance(values.cluster[c]);
-    estimate.mean = h.clusters.empty() ? 0.0 : estimate.cluster[0];
     return estimate;
 }
 
@@ -133,7 +153,9 @@ std::size_t ClusterHierarchy::memory_bytes() const {
            (receive_scale.capacity() + send_scale.capacity() + reach.capacity() + exposed.capacity() +
             escape.capacity()) *
                sizeof(float) +
-           leaves.capacity() * sizeof(std::uint32_t);
+           leaves.capacity() * sizeof(std::uint32_t) + direct.factors.memory_bytes() +
+           (direct.emitters.capacity() + direct.leaf_column.capacity()) * sizeof(std::uint32_t) +
+           direct.share.capacity() * sizeof(float);
 }
 
 ClusteredTransport::ClusteredTransport(std::unique_ptr<ClusterHierarchy> hierarchy,
@@ -156,22 +178,57 @@ void ClusteredTransport::gather(std::span<const glm::dvec3> radiosity,
     const ClusterHierarchy& h = *hierarchy_;
     // Kept between calls on this thread: a solver steps on one thread.
     thread_local FlowBuffers buffers;
-    gather_leaves(h, radiosity, irradiance, true, buffers);
+    if (h.direct.empty()) {
+        gather_leaves(h, radiosity, irradiance, true, buffers);
+        return;
+    }
+    // The links carry what each leaf reflects; the emitters' light arrives by the direct light's factors.
+    thread_local std::vector<glm::dvec3> emitted, reflected;
+    emitted.resize(size());
+    reflected.resize(size());
+    direct_emission(h, emission, reflectance, outside, emitted);
+    for (std::size_t k = 0; k < size(); ++k) reflected[k] = radiosity[k] - emitted[k];
+    gather_leaves(h, reflected, irradiance, true, buffers);
+    add_direct_light(h, emitted, irradiance);
 }
 
 std::vector<double> ClusteredTransport::reach() const {
+    // The links' row sums, but an emitter's leaves send their emission, nearly all of their radiosity, by
+    // the direct light's column: its share. Their links are balanced to the same share where they reach
+    // that far (an emitter that reflects nothing has none).
+    const ClusterHierarchy& h = *hierarchy_;
     const std::vector<glm::dvec3> ones(size(), glm::dvec3(1.0));
     std::vector<glm::dvec3> gathered(size());
-    gather(ones, gathered);
+    FlowBuffers buffers;
+    gather_leaves(h, ones, gathered, true, buffers);
     std::vector<double> out(size());
-    for (std::size_t k = 0; k < out.size(); ++k) out[k] = gathered[k].x;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        const std::uint32_t c =
+            h.direct.empty() ? ClusterHierarchy::DirectLight::kNone : h.direct.leaf_column[k];
+        out[k] = c == ClusterHierarchy::DirectLight::kNone ? gathered[k].x
+                                                           : static_cast<double>(h.direct.share[c]);
+    }
     return out;
 }
 
 std::vector<double> ClusteredTransport::escape() const {
     const ClusterHierarchy& h = *hierarchy_;
     if (h.escape.size() != size()) return Transport::escape();
-    return std::vector<double>(h.escape.begin(), h.escape.end());
+    // What does not reach a front (1 − reach) meets a back as often as the leaf's rays found (those rays
+    // are counted apart and not scaled); the rest escapes. Taking the leaf's measured escape instead would
+    // split the difference between its reach and its measure at random between the escape and the backs.
+    // Where no ray escapes (a closed scene), nothing does.
+    const std::vector<double> reached = reach();
+    std::vector<double> out(size(), 0.0);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        const double escape = static_cast<double>(h.escape[k]);
+        const double exposed = static_cast<double>(h.exposed[k]);
+        if (!(escape > 0.0) || !(exposed > 0.0)) continue;
+        const double front = std::min(1.0, static_cast<double>(h.reach[k]) / exposed);
+        const double back = std::max(0.0, 1.0 - front - escape);
+        out[k] = std::clamp(1.0 - reached[k] - back, 0.0, std::max(0.0, 1.0 - reached[k]));
+    }
+    return out;
 }
 
 TransportReport ClusteredTransport::report() const {
@@ -217,6 +274,8 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
     const double offset = ray_offset(base);
     // Closer than this is contact: a thousandth of the scene's extent.
     const double contact = 1e-3 * bounding_box(scene).largest_extent();
+    // Where the emitters are few and small, their light is aimed at every leaf, not linked.
+    std::vector<std::uint32_t> emitters = direct_light_emitters(scene, base);
     auto link = [&](const ClusteredOptions& round, const RadiosityEstimate* estimate) {
         h->links.clear();
         report.cluster_links = 0;
@@ -225,8 +284,16 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
         index_links(*h);
         h->leaves = h->tree.leaves();
         if (!estimate) return;  // the first guess: its links as they stand are close enough
+        if (progress) progress->begin("splitting along shadows", 0);
+        split_shadow_edges(*h, base, emitters, rays, offset, report.min_patch_size,
+                           round.tolerance * estimate->mean,
+                           shadow_leaf_allowance(*h, report.memory_budget, emitters.size()));
         if (progress) progress->begin("reach of the leaves", 0);
         measure_reach(*h, rays, offset, contact, options.seed);
+        h->leaf_patches = h->tree.leaf_mesh(h->leaves);
+        compute_direct_light(*h, scene, base, emitters, rays, offset, options.direct_light_rays, options.seed,
+                             progress);
+        report.rays += h->direct.rays;
         if (progress) progress->begin("balancing the leaves' energy", 0);
         report.rays += h->leaves.size() * kReachRays;
         report.balance_error = balance_leaves(*h);
@@ -238,10 +305,11 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
     coarse.tolerance = kFirstRoundTolerance * options.tolerance;
     coarse.visibility_rays = 1;
     link(coarse, nullptr);
-    const RadiosityEstimate estimate = rough_solution(*h);
+    std::vector<std::uint8_t> aimed(base.size(), 0);
+    for (std::uint32_t p : emitters) aimed[p] = 1;
+    const RadiosityEstimate estimate = rough_solution(*h, scene, aimed);
     if (progress) progress->begin("refining links", 0);
     link(options, &estimate);
-    h->leaf_patches = h->tree.leaf_mesh(h->leaves);
     report.clusters = h->clusters.size();
     report.elements = h->tree.size();
     report.leaves = h->leaves.size();

@@ -67,26 +67,38 @@ std::vector<std::uint8_t> column_flags(std::size_t patch_count, std::span<const 
 
 RowFunction emitter_rows(const PatchMesh& patches, const RayScene& scene, std::vector<std::uint32_t> emitters,
                          std::vector<double> luminance, int hemisphere_rays, std::uint64_t seed) {
-    auto shapes = std::make_shared<const std::vector<PatchShape>>(patch_shapes(patches));
-    auto list = std::make_shared<const std::vector<std::uint32_t>>(std::move(emitters));
-    auto power = std::make_shared<const std::vector<double>>(std::move(luminance));
+    std::vector<PatchShape> shapes = patch_shapes(patches);
+    EmitterSet set;
+    set.shapes.reserve(emitters.size());
+    for (std::uint32_t j : emitters) set.shapes.push_back(shapes[j]);
+    set.columns = std::move(emitters);
+    set.luminance = std::move(luminance);
+    return emitter_rows(std::move(shapes), {}, std::move(set), scene, ray_offset(patches), hemisphere_rays,
+                        seed);
+}
+
+RowFunction emitter_rows(std::vector<PatchShape> receivers, std::vector<std::uint32_t> own_column,
+                         EmitterSet emitters, const RayScene& scene, double offset, int hemisphere_rays,
+                         std::uint64_t seed) {
+    auto shapes = std::make_shared<const std::vector<PatchShape>>(std::move(receivers));
+    auto own = std::make_shared<const std::vector<std::uint32_t>>(std::move(own_column));
+    auto set = std::make_shared<const EmitterSet>(std::move(emitters));
     auto scratch = std::make_shared<tbb::enumerable_thread_specific<EmitterScratch>>();
-    const double offset = ray_offset(patches);
-    const std::size_t budget =
-        std::min<std::size_t>(static_cast<std::size_t>(std::max(hemisphere_rays, kEmitterShadowRays)),
-                              kEmitterShadowRays * list->size());
+    const std::size_t count = set->columns.size();
+    const std::size_t budget = std::min<std::size_t>(
+        static_cast<std::size_t>(std::max(hemisphere_rays, kEmitterShadowRays)), kEmitterShadowRays * count);
     const int draws = static_cast<int>(std::max<std::size_t>(1, budget / kRaysPerDraw));
-    return [&scene, shapes, list, power, scratch, offset, draws, seed](
-               std::uint32_t i, std::vector<RowEntry>& entries, RowStats& stats) {
-        const std::vector<PatchShape>& shape = *shapes;
+    return [&scene, shapes, own, set, scratch, offset, draws, seed](std::uint32_t i, std::vector<RowEntry>& entries,
+                                                                   RowStats& stats) {
         EmitterScratch& s = scratch->local();
-        const PatchShape& pi = shape[i];
-        s.weight.assign(list->size(), 0.0);
+        const PatchShape& pi = (*shapes)[i];
+        const std::uint32_t skip = own->empty() ? i : (*own)[i];
+        const std::size_t n = set->columns.size();
+        s.weight.assign(n, 0.0);
         double total = 0.0;
-        for (std::size_t k = 0; k < list->size(); ++k) {
-            const std::uint32_t j = (*list)[k];
-            if (j == i) continue;
-            s.weight[k] = (*power)[k] * factor_weight(pi.centroid, pi.normal, pi.radius, shape[j]);
+        for (std::size_t k = 0; k < n; ++k) {
+            if (set->columns[k] == skip) continue;
+            s.weight[k] = set->luminance[k] * factor_weight(pi.centroid, pi.normal, pi.radius, set->shapes[k]);
             total += s.weight[k];
         }
         if (!(total > 0.0)) return;
@@ -95,8 +107,8 @@ RowFunction emitter_rows(const PatchMesh& patches, const RayScene& scene, std::v
         s.candidates.clear();
         s.rays.clear();
         for (const PowerDraw& d : s.draws) {
-            const std::uint32_t j = (*list)[d.source];
-            const PatchShape& pj = shape[j];
+            const std::uint32_t j = set->columns[d.source];
+            const PatchShape& pj = set->shapes[d.source];
             const ConvexPolygon source = clip_to_front(pj.polygon, pi.centroid, pi.normal);
             if (source.empty()) continue;
             const ConvexPolygon receiver = clip_to_front(pi.polygon, pj.centroid, pj.normal);

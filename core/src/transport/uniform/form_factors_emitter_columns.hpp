@@ -7,6 +7,7 @@
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/ray/ray_scene.hpp"
 #include "transport/uniform/form_factors_rows.hpp"
+#include "transport/uniform/patch_shapes.hpp"
 
 namespace rad {
 
@@ -49,6 +50,18 @@ std::vector<std::uint8_t> column_flags(std::size_t patch_count, std::span<const 
 // sampling weight's first factor), in the order of `emitters`; `hemisphere_rays` the rows' ray count.
 RowFunction emitter_rows(const PatchMesh& patches, const RayScene& scene, std::vector<std::uint32_t> emitters,
                          std::vector<double> luminance, int hemisphere_rays, std::uint64_t seed);
+
+// The same between receivers and emitters given apart (the leaves of a hierarchy, and the base patches that
+// emit): row i is receivers[i]'s, and emitter k fills column columns[k] (ascending). A receiver lying in an
+// emitter (own_column[i], where given; else the emitter whose column is i) takes none of its light.
+struct EmitterSet {
+    std::vector<PatchShape> shapes;
+    std::vector<std::uint32_t> columns;
+    std::vector<double> luminance;
+};
+RowFunction emitter_rows(std::vector<PatchShape> receivers, std::vector<std::uint32_t> own_column,
+                         EmitterSet emitters, const RayScene& scene, double offset, int hemisphere_rays,
+                         std::uint64_t seed);
 
 // Row i of `first` and of `second`, which fill distinct columns, merged in column order.
 RowFunction merged_rows(RowFunction first, RowFunction second);

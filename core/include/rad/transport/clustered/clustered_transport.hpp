@@ -12,6 +12,7 @@
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/scene.hpp"
 #include "rad/transport/transport.hpp"
+#include "rad/transport/uniform/form_factor_matrix.hpp"
 #include "rad/util/progress.hpp"
 
 namespace rad {
@@ -30,7 +31,10 @@ struct ClusteredOptions {
     double tolerance = 0.05;
     // Elements are not split when their longest edge is at most this; 0 picks the scene's extent / 256.
     double min_patch_size = 0.0;
-    int visibility_rays = 4;           // shadow rays per link
+    int visibility_rays = 4;  // shadow rays per link
+    // Shadow rays per leaf for the emitters' direct light (at most 64 per emitter base patch), where it is
+    // aimed at them rather than linked (few and small emitters).
+    int direct_light_rays = 256;
     unsigned max_cluster_patches = 4;  // base patches in a leaf cluster
     std::size_t max_links = 50'000'000;
     // Refinement stops where the elements and links would take more (0: half the machine's memory); a
@@ -116,6 +120,21 @@ struct ClusterHierarchy {
     std::vector<float> send_scale;
     std::vector<std::uint32_t> leaves;
     PatchMesh leaf_patches;
+    // The emitters' light aimed at each leaf by shadow rays (as the uniform transport's light columns are),
+    // where the emitters are few and small enough: the links then carry each leaf's radiosity less what it
+    // emits, and the leaves gather the emission by these factors instead.
+    struct DirectLight {
+        static constexpr std::uint32_t kNone = 0xffffffffu;
+        std::vector<std::uint32_t> emitters;     // base patches, ascending
+        std::vector<std::uint32_t> leaf_column;  // per leaf: its base patch's index in `emitters`, or kNone
+        FormFactorMatrix factors;                // rows: leaves, per unit exposed area; columns: `emitters`
+        // Per column, what the leaves receive of its light per unit of its leaves' exposed area: the
+        // emitter's reach for what it emits (the links carry the rest of its radiosity).
+        std::vector<float> share;
+        std::uint64_t rays = 0;
+        bool empty() const { return emitters.empty(); }
+    };
+    DirectLight direct;
 
     explicit ClusterHierarchy(const PatchMesh& base) : tree(base) {}
     std::size_t memory_bytes() const;
