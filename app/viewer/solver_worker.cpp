@@ -358,14 +358,10 @@ void SolverWorker::rebuild(const Rebuild& request) {
     show_preview();
     pipeline_->prepare(progress_.get());
     solver_ready_ = true;
-    const bool new_elements = &pipeline_->patches() != &pipeline_->loaded().patches;
-    // Adaptive, hierarchical or clustered leaves are new geometry; else the preview's direct light is
-    // traced again, now with the patches' means kept.
-    if (new_elements) {
-        display_ = pipeline_->build_display(options_.display);
-    } else if (options_.display.mode == ColourMode::smooth && options_.display.direct_light_at_vertices) {
-        pipeline_->add_direct_light(display_);
-    }
+    // Built again from the patches: adaptive, hierarchical or clustered leaves are new geometry, and the
+    // direct light splits the display's triangles along shadow edges, so it is traced on the unsplit mesh,
+    // now with the patches' means kept.
+    display_ = pipeline_->build_display(options_.display);
     start_solver(Reset{options_.solver.method, options_.solver.tolerance, false}, true);
 }
 
@@ -403,7 +399,8 @@ void SolverWorker::show_preview() {
     if (options_.display.mode != ColourMode::smooth || !options_.display.direct_light_at_vertices) return;
     progress_->begin("direct light", 0);
     pipeline_->add_direct_light(display_);
-    if (!display_.direct.vertex.empty()) publish(false, true);
+    // New geometry: the direct light splits the triangles along shadow edges.
+    if (!display_.direct.vertex.empty()) publish(true, true);
 }
 
 void SolverWorker::continue_saved(std::size_t saved_steps) {

@@ -45,8 +45,9 @@ struct Shown {
     DisplayMesh display;
 };
 
-// The scene solved at `patch_size`, its display mesh with the direct light at the vertices or without.
-Shown show(Scene scene, double patch_size, bool direct_at_vertices) {
+// The scene solved at `patch_size`, its display mesh with the direct light at the vertices or without;
+// `split`: along shadow edges; `keep`: each patch's mean.
+Shown show(Scene scene, double patch_size, bool direct_at_vertices, bool split = true, bool keep = true) {
     Shown s;
     s.solved = test::solve_scene(std::move(scene), Subdivision::uniform, patch_size);
     const Transport& t = *s.solved->system.transport;
@@ -65,35 +66,60 @@ Shown show(Scene scene, double patch_size, bool direct_at_vertices) {
                                         .reflectance = t.reflectance,
                                         .area = t.area,
                                         .patch_direct = direct,
-                                        .seed = 1});
+                                        .seed = 1,
+                                        .keep_patch_means = keep,
+                                        .split_shadow_edges = split});
     return s;
 }
 
 struct FloorErrors {
-    double penumbra_rms = 0.0;  // over vertices within 0.15 of the plate's edge, relative to the lit value
-    double umbra_max = 0.0;     // the largest radiance shown where the light is hidden (x < -0.04)
-    double mean_rms = 0.0;      // the RMS error of the floor patches' drawn means, relative to the lit value
+    double penumbra_rms =
+        0.0;                 // of the drawn image within 0.15 of the plate's edge, relative to the lit value
+    double umbra_max = 0.0;  // the largest radiance shown where the light is hidden (x < -0.04)
+    double mean_rms = 0.0;   // the RMS error of the floor patches' drawn means, relative to the lit value
 };
+
+// The drawn radiance over one triangle at barycentric (u, v): linear between its vertices' values.
+double drawn_at(const std::vector<glm::vec3>& shown, const glm::uvec3& c, double u, double v) {
+    return (1.0 - u - v) * shown[c[0]].y + u * shown[c[1]].y + v * shown[c[2]].y;
+}
 
 FloorErrors floor_errors(const Shown& s) {
     const std::vector<glm::vec3> shown = vertex_radiance(s.display, s.solved->radiosity);
     const double lit = exact_radiance({0.2f, 0.0f, 0.0f});
     FloorErrors e;
-    double sum = 0.0;
-    int count = 0;
     for (std::size_t v = 0; v < s.display.vertex_count(); ++v) {
         const glm::vec3& p = s.display.positions[v];
         if (std::abs(p.y) > 1e-6f || s.display.normals[v].y < 0.99f) continue;  // the floor's vertices
-        if (std::abs(p.x) > 0.45f || std::abs(p.z) > 0.45f) continue;           // off the border
-        const double error = shown[v].y - exact_radiance(p);
         if (p.x < -0.04f) e.umbra_max = std::max(e.umbra_max, static_cast<double>(shown[v].y));
-        if (std::abs(p.x - 0.03f) < 0.15f) {
-            sum += (error / lit) * (error / lit);
-            ++count;
+    }
+    // The drawn image's error, integrated over the floor near the plate's edge: each floor triangle is
+    // sampled at the centres of its 8 x 8 sub-triangles, as a picture of it would be.
+    constexpr int kSteps = 8;
+    double sum = 0.0, covered = 0.0;
+    for (std::size_t t = 0; t < s.display.triangles.size(); ++t) {
+        const glm::uvec3& c = s.display.triangles[t];
+        const glm::dvec3 a(s.display.positions[c[0]]), b(s.display.positions[c[1]]),
+            d(s.display.positions[c[2]]);
+        const glm::dvec3 n = glm::cross(b - a, d - a);
+        if (std::abs(a.y) > 1e-6 || !(n.y > 0.0)) continue;  // the floor's triangles
+        const double piece = 0.5 * glm::length(n) / (kSteps * kSteps);
+        for (int i = 0; i < kSteps; ++i) {
+            for (int j = 0; i + j < kSteps; ++j) {
+                for (int flip = 0; flip < (i + j + 1 < kSteps ? 2 : 1); ++flip) {
+                    const double u = (i + (flip ? 2.0 : 1.0) / 3.0) / kSteps;
+                    const double v = (j + (flip ? 2.0 : 1.0) / 3.0) / kSteps;
+                    const glm::dvec3 p = a + u * (b - a) + v * (d - a);
+                    if (std::abs(p.x) > 0.45 || std::abs(p.z) > 0.45 || std::abs(p.x - 0.03) > 0.15) continue;
+                    const double error = (drawn_at(shown, c, u, v) - exact_radiance(glm::vec3(p))) / lit;
+                    sum += piece * error * error;
+                    covered += piece;
+                }
+            }
         }
     }
-    EXPECT_GT(count, 10);
-    e.penumbra_rms = std::sqrt(sum / count);
+    EXPECT_GT(covered, 0.1);
+    e.penumbra_rms = std::sqrt(sum / covered);
     // What each floor patch's triangles show on average, against the radiance it holds.
     std::vector<double> drawn(s.display.patch_count, 0.0), area(s.display.patch_count, 0.0);
     for (std::size_t t = 0; t < s.display.triangles.size(); ++t) {
@@ -124,6 +150,25 @@ TEST(VertexDirectLight, TheShadowEdgeIsSharpAtTheVertices) {
     EXPECT_LT(with.penumbra_rms, without.penumbra_rms);
     EXPECT_EQ(with.umbra_max, 0.0);  // every ray blocked: no light, exactly
     EXPECT_LT(with.mean_rms, without.mean_rms);
+}
+
+// Splitting the triangles where the light steps draws the penumbra at finer than the patches: closer to the
+// exact light where vertices show their own value, and each patch's drawn mean closer to what it holds
+// where means are kept. The vertices it adds are at most as many as the mesh had.
+TEST(VertexDirectLight, SplittingAlongTheShadowEdgeDrawsItCloser) {
+    const Shown split = show(load_scene(kShadowEdge), 0.1, true, true, false);
+    const Shown whole = show(load_scene(kShadowEdge), 0.1, true, false, false);
+    const FloorErrors exact_split = floor_errors(split), exact_whole = floor_errors(whole);
+    const FloorErrors kept_split = floor_errors(show(load_scene(kShadowEdge), 0.1, true, true, true));
+    const FloorErrors kept_whole = floor_errors(show(load_scene(kShadowEdge), 0.1, true, false, true));
+    std::printf("vertices %zu split, %zu not; penumbra RMS %.4f / %.4f; patch means RMS (kept) %.4f / %.4f\n",
+                split.display.vertex_count(), whole.display.vertex_count(), exact_split.penumbra_rms,
+                exact_whole.penumbra_rms, kept_split.mean_rms, kept_whole.mean_rms);
+    EXPECT_GT(split.display.vertex_count(), whole.display.vertex_count());
+    EXPECT_LE(split.display.vertex_count(), 2 * whole.display.vertex_count());
+    EXPECT_LT(exact_split.penumbra_rms, 0.8 * exact_whole.penumbra_rms);
+    EXPECT_EQ(exact_split.umbra_max, 0.0);
+    EXPECT_LT(kept_split.mean_rms, 0.8 * kept_whole.mean_rms);
 }
 
 TEST(VertexDirectLight, ShowsOnlyWhatTheRadiosityHoldsOfTheDirectLight) {

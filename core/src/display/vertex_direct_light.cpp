@@ -7,12 +7,15 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtx/component_wise.hpp>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
+#include "display/display_edge_split.hpp"
 #include "display/vertex_emitters.hpp"
+#include "rad/display/false_colour.hpp"
 #include "sampling/power_draws.hpp"
 #include "sampling/sampling.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
@@ -28,6 +31,14 @@ constexpr std::uint64_t kVertexKey = 0x7e47'd1ec'0000'0001ull;
 constexpr double kTowardsCentroid = 1e-3;
 // Of kVertexShadowRays, how many tell first whether a vertex sees all of the light, or none.
 constexpr int kVertexFirstRays = 16;
+// A display edge is split where the direct light at its ends differs by more than this share of the larger
+// and of the vertices' mean, up to kShadowEdgeSplits times.
+constexpr double kShadowEdgeContrast = 0.25;
+constexpr double kShadowEdgeFloor = 0.05;
+constexpr int kShadowEdgeSplits = 3;
+constexpr double kShadowEdgeBudget = 1.0;
+// Of the scene's largest extent: an eighth of the default patch size.
+constexpr double kShadowEdgeShortest = 1.0 / 128.0;
 
 struct Candidate {
     glm::dvec3 light{0.0};  // E_j U times what each open ray adds, as a share
@@ -211,7 +222,8 @@ void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> pa
 std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays,
                                   std::span<const glm::dvec3> emitted, const Emitters& emitters,
                                   std::span<const glm::dvec3> points, std::span<const glm::dvec3> normals,
-                                  std::uint64_t seed, double exact_factor_budget = kVertexExactFactorBudget) {
+                                  std::uint64_t seed, double exact_factor_budget = kVertexExactFactorBudget,
+                                  std::size_t first_index = 0) {
     const double offset = ray_offset(patches);
     const bool exact_when_open =
         static_cast<double>(points.size()) * static_cast<double>(emitters.patches.size()) <=
@@ -222,12 +234,83 @@ std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays
                       [&](const tbb::blocked_range<std::size_t>& range) {
                           Scratch& s = scratch.local();
                           for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                              RandomStream random(seed ^ kVertexKey, v);
+                              RandomStream random(seed ^ kVertexKey, first_index + v);
                               light[v] = direct_irradiance(points[v], normals[v], emitters, emitted, rays,
                                                            offset, exact_when_open, random, s);
                           }
                       });
     return light;
+}
+
+// Appends the light at the display's vertices from light.size() on.
+void add_lights(const DisplayMesh& display, const VertexDirectLightInput& input, const Emitters& emitters,
+                std::vector<PointLight>& light) {
+    const std::size_t first = light.size(), count = display.vertex_count() - first;
+    std::vector<glm::dvec3> origins(count), normals(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        origins[k] = vertex_origin(display, *input.patches, first + k);
+        normals[k] = glm::normalize(glm::dvec3(display.normals[first + k]));
+    }
+    const std::vector<PointLight> added =
+        lights_at(*input.patches, *input.rays, input.emitted, emitters, origins, normals, input.seed,
+                  kVertexExactFactorBudget, first);
+    light.insert(light.end(), added.begin(), added.end());
+}
+
+struct ShadowEdge {
+    DisplayEdge edge;
+    double weight = 0.0;  // the light's step times the edge's length: how much of the image it spans
+};
+
+// The interior edges longer than `shortest` across which the direct light changes by more than
+// kShadowEdgeContrast of the larger end's and kShadowEdgeFloor of the vertices' mean: a shadow's edge, or a
+// contact, between them.
+std::vector<ShadowEdge> shadow_edges(const DisplayMesh& display, const std::vector<PointLight>& light,
+                                     double shortest) {
+    double mean = 0.0;
+    for (const PointLight& p : light) mean += rec709_luminance(p.irradiance);
+    mean /= static_cast<double>(std::max<std::size_t>(light.size(), 1));
+    std::vector<ShadowEdge> edges;
+    for (const DisplayEdge& e : interior_edges(display)) {
+        const double a = rec709_luminance(light[e.a].irradiance), b = rec709_luminance(light[e.b].irradiance);
+        const double step = std::abs(a - b);
+        const bool shadowed =
+            light[e.a].visibility != Visibility::whole || light[e.b].visibility != Visibility::whole;
+        const double length = glm::length(display.positions[e.a] - display.positions[e.b]);
+        if (shadowed && length > shortest && step > kShadowEdgeContrast * std::max(a, b) &&
+            step > kShadowEdgeFloor * mean)
+            edges.push_back({e, step * length});
+    }
+    return edges;
+}
+
+// Splits the display's triangles across shadow edges, kShadowEdgeSplits times at most, each new vertex
+// taking its own direct light, within kShadowEdgeBudget new vertices per vertex of the mesh (the edges that
+// span most of the image first): the light's steps are drawn at a half, a quarter, an eighth of the patches'
+// size instead of across whole triangles, down to an eighth of the default patch size. Where patches are
+// already that fine (a clustered room's leaves near the furniture) they resolve the light themselves.
+void split_shadow_edges(DisplayMesh& display, const VertexDirectLightInput& input, const Emitters& emitters,
+                        std::vector<PointLight>& light) {
+    const std::size_t budget =
+        display.vertex_count() +
+        static_cast<std::size_t>(kShadowEdgeBudget * static_cast<double>(display.vertex_count()));
+    glm::vec3 low(INFINITY), high(-INFINITY);
+    for (const glm::vec3& p : display.positions) low = glm::min(low, p), high = glm::max(high, p);
+    const double shortest = kShadowEdgeShortest * static_cast<double>(glm::compMax(high - low));
+    for (int round = 0; round < kShadowEdgeSplits && display.vertex_count() < budget; ++round) {
+        std::vector<ShadowEdge> edges = shadow_edges(display, light, shortest);
+        if (edges.empty()) return;
+        const std::size_t room = budget - display.vertex_count();
+        if (edges.size() > room) {
+            std::nth_element(edges.begin(), edges.begin() + static_cast<std::ptrdiff_t>(room), edges.end(),
+                             [](const ShadowEdge& x, const ShadowEdge& y) { return x.weight > y.weight; });
+            edges.resize(room);
+        }
+        std::vector<DisplayEdge> split(edges.size());
+        for (std::size_t k = 0; k < edges.size(); ++k) split[k] = edges[k].edge;
+        split_display_edges(display, split);
+        add_lights(display, input, emitters, light);
+    }
 }
 
 }  // namespace
@@ -266,13 +349,9 @@ void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput&
     display.direct = {};
     const std::optional<Emitters> emitters = find_emitters(patches, input.emitted);
     if (!emitters) return;
-    std::vector<glm::dvec3> origins(display.vertex_count()), normals(display.vertex_count());
-    for (std::size_t v = 0; v < display.vertex_count(); ++v) {
-        origins[v] = vertex_origin(display, patches, v);
-        normals[v] = glm::normalize(glm::dvec3(display.normals[v]));
-    }
-    const std::vector<PointLight> light =
-        lights_at(patches, *input.rays, input.emitted, *emitters, origins, normals, input.seed);
+    std::vector<PointLight> light;
+    add_lights(display, input, *emitters, light);
+    if (input.split_shadow_edges) split_shadow_edges(display, input, *emitters, light);
     std::vector<glm::dvec3> exact(display.vertex_count(), glm::dvec3(0.0));
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;

@@ -34,6 +34,9 @@ struct VertexDirectLightInput {
     // false before any transport exists (a preview of the light while form factors run): patch_direct is
     // not known, and each vertex keeps its exact value.
     bool keep_patch_means = true;
+    // Split the display's triangles where the direct light steps across them (a shadow's edge), so the step
+    // is drawn finer than the patches.
+    bool split_shadow_edges = true;
 };
 
 // Fills display.direct: the emitters' direct light at every vertex, where a patch's mean would blur shadow
@@ -43,7 +46,9 @@ struct VertexDirectLightInput {
 // up to kVertexShadowRays rays drawn over the emitters by power (each drawn when they are few), so every
 // vertex's value is unbiased; 16 first, and the rest only where they disagree (a penumbra). Where the 16
 // all reach the light, the exact unoccluded sum over every emitter patch instead (within
-// kVertexExactFactorBudget). Each vertex that
+// kVertexExactFactorBudget). With split_shadow_edges, the triangles are then split along the edges where
+// that light steps and the new vertices traced too, so `display` should be one build_display_mesh made
+// (a second call splits it further). Each vertex that
 // sees some of the light then moves by its patches' shortfalls (what their triangles draw against ρ H_d,
 // what they hold), so a falloff's chords do not darken or brighten them; vertices in umbra keep 0.
 // vertex_radiance shows each vertex its patches' reconstruction of the rest of the light plus this. Leaves it
