@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <glm/gtx/component_wise.hpp>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -16,6 +15,7 @@
 #include "display/display_edge_split.hpp"
 #include "display/vertex_emitters.hpp"
 #include "rad/display/false_colour.hpp"
+#include "rad/scene/scene.hpp"
 #include "sampling/power_draws.hpp"
 #include "sampling/sampling.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
@@ -31,8 +31,9 @@ constexpr std::uint64_t kVertexKey = 0x7e47'd1ec'0000'0001ull;
 constexpr double kTowardsCentroid = 1e-3;
 // Of kVertexShadowRays, how many tell first whether a vertex sees all of the light, or none.
 constexpr int kVertexFirstRays = 16;
-// A display edge is split where the direct light at its ends differs by more than this share of the larger
-// and of the vertices' mean, up to kShadowEdgeSplits times.
+// A display edge is split where the direct light at its ends differs by more than kShadowEdgeContrast of the
+// larger and kShadowEdgeFloor of the vertices' mean, up to kShadowEdgeSplits times, adding at most
+// kShadowEdgeBudget new vertices per vertex of the mesh.
 constexpr double kShadowEdgeContrast = 0.25;
 constexpr double kShadowEdgeFloor = 0.05;
 constexpr int kShadowEdgeSplits = 3;
@@ -219,15 +220,18 @@ void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> pa
     }
 }
 
+// Whether points that see all of the light take the exact sum over every emitter patch: while `points` ×
+// emitter patches stay within the budget.
+bool exact_when_open(std::size_t points, const Emitters& emitters, double exact_factor_budget) {
+    return static_cast<double>(points) * static_cast<double>(emitters.patches.size()) <= exact_factor_budget;
+}
+
+// The light at `points`, the k-th drawing from random stream first_index + k.
 std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays,
                                   std::span<const glm::dvec3> emitted, const Emitters& emitters,
                                   std::span<const glm::dvec3> points, std::span<const glm::dvec3> normals,
-                                  std::uint64_t seed, double exact_factor_budget = kVertexExactFactorBudget,
-                                  std::size_t first_index = 0) {
+                                  std::uint64_t seed, bool exact_when_open, std::size_t first_index = 0) {
     const double offset = ray_offset(patches);
-    const bool exact_when_open =
-        static_cast<double>(points.size()) * static_cast<double>(emitters.patches.size()) <=
-        exact_factor_budget;
     std::vector<PointLight> light(points.size());
     tbb::enumerable_thread_specific<Scratch> scratch;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 64),
@@ -242,18 +246,18 @@ std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays
     return light;
 }
 
-// Appends the light at the display's vertices from light.size() on.
+// Appends the light at the display's vertices from light.size() on; `exact` as exact_when_open decided for
+// the whole display, so the vertices a split adds are traced as the others were.
 void add_lights(const DisplayMesh& display, const VertexDirectLightInput& input, const Emitters& emitters,
-                std::vector<PointLight>& light) {
+                bool exact, std::vector<PointLight>& light) {
     const std::size_t first = light.size(), count = display.vertex_count() - first;
     std::vector<glm::dvec3> origins(count), normals(count);
     for (std::size_t k = 0; k < count; ++k) {
         origins[k] = vertex_origin(display, *input.patches, first + k);
         normals[k] = glm::normalize(glm::dvec3(display.normals[first + k]));
     }
-    const std::vector<PointLight> added =
-        lights_at(*input.patches, *input.rays, input.emitted, emitters, origins, normals, input.seed,
-                  kVertexExactFactorBudget, first);
+    const std::vector<PointLight> added = lights_at(*input.patches, *input.rays, input.emitted, emitters,
+                                                    origins, normals, input.seed, exact, first);
     light.insert(light.end(), added.begin(), added.end());
 }
 
@@ -290,13 +294,13 @@ std::vector<ShadowEdge> shadow_edges(const DisplayMesh& display, const std::vect
 // size instead of across whole triangles, down to an eighth of the default patch size. Where patches are
 // already that fine (a clustered room's leaves near the furniture) they resolve the light themselves.
 void split_shadow_edges(DisplayMesh& display, const VertexDirectLightInput& input, const Emitters& emitters,
-                        std::vector<PointLight>& light) {
+                        bool exact, std::vector<PointLight>& light) {
     const std::size_t budget =
         display.vertex_count() +
         static_cast<std::size_t>(kShadowEdgeBudget * static_cast<double>(display.vertex_count()));
-    glm::vec3 low(INFINITY), high(-INFINITY);
-    for (const glm::vec3& p : display.positions) low = glm::min(low, p), high = glm::max(high, p);
-    const double shortest = kShadowEdgeShortest * static_cast<double>(glm::compMax(high - low));
+    BoundingBox box;
+    for (const glm::vec3& p : display.positions) box.extend(glm::dvec3(p));
+    const double shortest = kShadowEdgeShortest * box.largest_extent();
     for (int round = 0; round < kShadowEdgeSplits && display.vertex_count() < budget; ++round) {
         std::vector<ShadowEdge> edges = shadow_edges(display, light, shortest);
         if (edges.empty()) return;
@@ -309,7 +313,7 @@ void split_shadow_edges(DisplayMesh& display, const VertexDirectLightInput& inpu
         std::vector<DisplayEdge> split(edges.size());
         for (std::size_t k = 0; k < edges.size(); ++k) split[k] = edges[k].edge;
         split_display_edges(display, split);
-        add_lights(display, input, emitters, light);
+        add_lights(display, input, emitters, exact, light);
     }
 }
 
@@ -334,7 +338,8 @@ std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const Ray
     const std::optional<Emitters> emitters = find_emitters(patches, emitted);
     if (!emitters) return irradiance;
     const std::vector<PointLight> light =
-        lights_at(patches, rays, emitted, *emitters, points, normals, seed, exact_factor_budget);
+        lights_at(patches, rays, emitted, *emitters, points, normals, seed,
+                  exact_when_open(points.size(), *emitters, exact_factor_budget));
     for (std::size_t k = 0; k < points.size(); ++k) irradiance[k] = light[k].irradiance;
     return irradiance;
 }
@@ -349,9 +354,10 @@ void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput&
     display.direct = {};
     const std::optional<Emitters> emitters = find_emitters(patches, input.emitted);
     if (!emitters) return;
+    const bool exact_sums = exact_when_open(display.vertex_count(), *emitters, kVertexExactFactorBudget);
     std::vector<PointLight> light;
-    add_lights(display, input, *emitters, light);
-    if (input.split_shadow_edges) split_shadow_edges(display, input, *emitters, light);
+    add_lights(display, input, *emitters, exact_sums, light);
+    if (input.split_shadow_edges) split_shadow_edges(display, input, *emitters, exact_sums, light);
     std::vector<glm::dvec3> exact(display.vertex_count(), glm::dvec3(0.0));
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;
