@@ -9,6 +9,7 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -149,6 +150,11 @@ int run_render(RenderOptions options, const CLI::App& command) {
         return 1;
     }
     const Stopwatch render_clock;
+    {
+        Progress progress;
+        const ProgressBar bar(progress);
+        pipeline->prepare_display(&progress);
+    }
     const HeadlessContext context(options.gl_platform);
     const SceneImageRenderer renderer(*pipeline, options.outline);
     // Each image is written as soon as it is drawn, so many cameras never hold many images. Exports take
@@ -224,6 +230,14 @@ CommandRunner add_render_command(CLI::App& app) {
     add_export_option(*render, options->exports);
     render->add_flag("--flat", options->flat, "Show each patch's own radiosity instead of interpolating");
     render->add_flag("--outline", options->outline, "Draw the patches' edges");
+    const std::map<std::string, FinalGather> gathers{
+        {"auto", FinalGather::automatic}, {"on", FinalGather::on}, {"off", FinalGather::off}};
+    render
+        ->add_option("--final-gather", options->pipeline.display.final_gather,
+                     "The last bounce gathered at each vertex by rays, for light that varies across a patch: "
+                     "auto (the default: for hierarchical and clustered solutions, whose leaves take light "
+                     "linked to larger elements), on or off")
+        ->transform(CLI::CheckedTransformer(gathers, CLI::ignore_case));
     add_gl_platform_option(*render, options->gl_platform);
     return [render, options]() -> int {
         if (!*render) return -1;

@@ -6,6 +6,7 @@
 #include "pipeline/form_factor_options.hpp"
 #include "pipeline/outside_light_options.hpp"
 #include "rad/display/vertex_direct_light.hpp"
+#include "rad/display/vertex_final_gather.hpp"
 #include "rad/mesh/patch_albedo.hpp"
 #include "rad/ray/ray_scene.hpp"
 #include "rad/transport/source_update.hpp"
@@ -324,10 +325,48 @@ std::vector<glm::dvec3> RadiosityPipeline::element_direct() const {
     return direct;
 }
 
-DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options) const {
+void RadiosityPipeline::prepare_display(Progress* progress) const {
+    if (!display_) display_.emplace(build_display(options_.display, progress));
+}
+
+DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Progress* progress) const {
     DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
     if (options.mode == ColourMode::smooth && options.direct_light_at_vertices) add_direct_light(display);
+    if (options.mode == ColourMode::smooth && gathers_at_vertices(options.final_gather))
+        add_final_gather(display, progress);
     return display;
+}
+
+bool RadiosityPipeline::gathers_at_vertices(FinalGather choice) const {
+    if (choice != FinalGather::automatic) return choice == FinalGather::on;
+    // Uniform patches resolve their own light; a hierarchy's leaves take light linked to larger receivers,
+    // constant over them (docs/measurements.md, "Final gather").
+    return subdivision_ == Subdivision::hierarchical || subdivision_ == Subdivision::clustered;
+}
+
+void RadiosityPipeline::add_final_gather(DisplayMesh& display, Progress* progress) const {
+    std::span<const glm::dvec3> emission, reflectance;
+    if (built_.transport) {
+        emission = built_.transport->emission;
+        reflectance = built_.transport->reflectance;
+    } else if (saved_) {
+        emission = saved_->emission;
+        reflectance = saved_->reflectance;
+    } else {
+        return;  // a preview: no solution to gather from yet
+    }
+    const PatchMesh& mesh = patches();
+    // What the vertices' own direct light holds is not gathered again.
+    std::vector<glm::dvec3> source(mesh.size(), glm::dvec3(0.0));
+    if (!display.direct.vertex.empty()) source = emitted_radiosity(loaded_.scene, mesh);
+    const RayScene rays(mesh);
+    add_vertex_final_gather(display, {.patches = &mesh,
+                                      .rays = &rays,
+                                      .emission = emission,
+                                      .reflectance = reflectance,
+                                      .source = source,
+                                      .seed = options_.form_factors.seed,
+                                      .progress = progress});
 }
 
 void RadiosityPipeline::add_direct_light(DisplayMesh& display) const {

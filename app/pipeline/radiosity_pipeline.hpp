@@ -102,12 +102,20 @@ class RadiosityPipeline {
     const DisplayMesh& display() const;
     // A display mesh of patches() with these options; in smooth mode with the emitters' direct light at its
     // vertices (DisplayOptions::direct_light_at_vertices), as add_direct_light adds it.
-    DisplayMesh build_display(const DisplayOptions& options) const;
+    DisplayMesh build_display(const DisplayOptions& options, Progress* progress = nullptr) const;
+    // Builds display() now, reporting the final gather's progress (a render's stage that can take seconds).
+    void prepare_display(Progress* progress) const;
     // Adds the emitters' direct light to the vertices of a display mesh of patches(). With a transport or a
     // saved solution, each patch's drawn mean is kept to the direct light its radiosity holds. Before
     // prepare (a preview while the transport is built) no patch holds any of it yet: each vertex keeps its
     // own value, to be shown with direct_share 1 over preview_radiosity().
     void add_direct_light(DisplayMesh& display) const;
+    // Adds the final gather (add_vertex_final_gather) to a display mesh of patches(), after its direct
+    // light; nothing before prepare or a saved solution.
+    void add_final_gather(DisplayMesh& display, Progress* progress = nullptr) const;
+    // Whether build_display adds the final gather for this choice: automatic gathers over hierarchical and
+    // clustered transports.
+    bool gathers_at_vertices(FinalGather choice) const;
     // E per patch of patches(): the radiosity before any light is reflected.
     std::vector<glm::dvec3> preview_radiosity() const;
     // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the

@@ -339,7 +339,7 @@ void SolverWorker::rebuild(const Rebuild& request) {
     if (!saved && pipeline_ && solver_ready_ && scene == shown_scene_) {
         pipeline->prepare(progress_.get());
         show_pipeline(std::move(pipeline), options, std::nullopt);
-        display_ = pipeline_->build_display(options_.display);
+        display_ = pipeline_->build_display(options_.display, progress_.get());
         start_solver(Reset{options_.solver.method, options_.solver.tolerance, false}, true);
         return;
     }
@@ -347,7 +347,7 @@ void SolverWorker::rebuild(const Rebuild& request) {
     shown_scene_ = scene;
     show_pipeline(std::move(pipeline), options, std::move(saved_options));
     if (saved) {
-        display_ = pipeline_->build_display(options_.display);
+        display_ = pipeline_->build_display(options_.display, progress_.get());
         publish(true, true);
         publish_statistics();
         pipeline_->prepare(progress_.get());
@@ -361,7 +361,7 @@ void SolverWorker::rebuild(const Rebuild& request) {
     // Built again from the patches: adaptive, hierarchical or clustered leaves are new geometry, and the
     // direct light splits the display's triangles along shadow edges, so it is traced on the unsplit mesh,
     // now with the patches' means kept.
-    display_ = pipeline_->build_display(options_.display);
+    display_ = pipeline_->build_display(options_.display, progress_.get());
     start_solver(Reset{options_.solver.method, options_.solver.tolerance, false}, true);
 }
 
@@ -455,7 +455,7 @@ void SolverWorker::edit_outside_light(const std::pair<std::string, std::string>&
 
 void SolverWorker::run_after_edit() {
     // The emitters' direct light at the vertices, and a textured surface's emission, change with an edit.
-    display_ = pipeline_->build_display(options_.display);
+    display_ = pipeline_->build_display(options_.display, progress_.get());
     start_history_from_solver();
     const bool can_step = !pipeline_->solver().report().finished();
     set_can_step(can_step);
@@ -532,10 +532,10 @@ void SolverWorker::take_step() {
 void SolverWorker::switch_colour_mode(ColourMode mode) {
     if (!pipeline_ || options_.display.mode == mode) return;
     options_.display.mode = mode;
-    display_ = pipeline_->build_display(options_.display);
+    display_ = pipeline_->build_display(options_.display, progress_.get());
     for (std::size_t i = 0; i < bounce_history_.size(); ++i) {
         vertex_bounces_[i] = std::make_shared<const std::vector<glm::vec3>>(
-            vertex_radiance(display_, bounce_history_[i], bounce_direct_share_[i]));
+            vertex_radiance(display_, bounce_history_[i], bounce_direct_share_[i], false));
     }
     publish(true, true);
 }
@@ -558,8 +558,9 @@ void SolverWorker::start_bounce_history() {
 }
 
 void SolverWorker::add_bounce(std::vector<glm::dvec3> bounce, double direct_share) {
-    vertex_bounces_.push_back(
-        std::make_shared<const std::vector<glm::vec3>>(vertex_radiance(display_, bounce, direct_share)));
+    vertex_bounces_.push_back(std::make_shared<const std::vector<glm::vec3>>(
+        // One bounce's light alone is no solution to gather from: its patches show it.
+        vertex_radiance(display_, bounce, direct_share, false)));
     bounce_history_.push_back(std::move(bounce));
     bounce_direct_share_.push_back(direct_share);
     if (bounce_history_.size() > kKeptBounces) {

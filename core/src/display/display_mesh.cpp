@@ -241,14 +241,47 @@ double direct_light_share(const DisplayMesh& display, std::span<const glm::dvec3
     return full > 0.0 ? std::clamp(held / full, 0.0, 1.0) : 0.0;
 }
 
+namespace {
+
+// Vertex v's value from the patches around it: their weighted values, kept within the range of the
+// patches it is made from, widened by that range. Extrapolation overshoots beside a sharp edge in the
+// light, and without bound where a patch's neighbours lie nearly in a line (small elements beside large
+// ones); the margin keeps a linear field's border vertices (half a patch or more beyond the last centroid,
+// at a T-vertex) exact. Light is never negative.
+glm::dvec3 reconstruct(const DisplayMesh& display, std::span<const glm::dvec3> values, std::size_t v) {
+    glm::dvec3 sum(0.0), low(std::numeric_limits<double>::infinity()), high(0.0);
+    for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
+        const glm::dvec3& b = values[display.weight_patch[k]];
+        sum += static_cast<double>(display.weight[k]) * b;
+        low = glm::min(low, b);
+        high = glm::max(high, b);
+    }
+    const glm::dvec3 margin = kReconstructionMargin * (high - low);
+    return glm::clamp(sum, glm::max(low - margin, glm::dvec3(0.0)), high + margin);
+}
+
+// What vertex v's row gathers: ρ Σ weight (B − source).
+glm::dvec3 gathered(const DisplayMesh::FinalGather& gather, std::span<const glm::dvec3> radiosity,
+                    std::size_t v) {
+    glm::dvec3 sum(0.0);
+    for (std::uint32_t k = gather.row_begin[v]; k < gather.row_begin[v + 1]; ++k) {
+        const std::uint32_t q = gather.patch[k];
+        sum += static_cast<double>(gather.weight[k]) * (radiosity[q] - gather.source[q]);
+    }
+    return gather.reflectance[v] * sum;
+}
+
+}  // namespace
+
 void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                     std::span<glm::vec3> radiance, std::optional<double> direct_share) {
+                     std::span<glm::vec3> radiance, std::optional<double> direct_share, bool final_gather) {
     if (radiance.size() != display.vertex_count()) {
         throw std::invalid_argument("vertex_radiance: the output does not have one entry per vertex");
     }
     if (radiosity.size() != display.patch_count) {
         throw std::invalid_argument("vertex_radiance: the radiosity does not have one entry per patch");
     }
+    const std::span<const glm::dvec3> solution = radiosity;
     // Where the vertices have direct light of their own, the patches give the rest.
     const bool has_direct = !display.direct.vertex.empty();
     const double share =
@@ -271,33 +304,25 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
         }
         radiosity = irradiance;
     }
+    const DisplayMesh::FinalGather& gather = display.gather;
+    const bool gathers = final_gather && !gather.empty() && gather.source.size() == solution.size();
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) {
             radiance[v] = glm::vec3(0.0f);  // no patch: no light (and no range to keep within)
             continue;
         }
-        glm::dvec3 sum(0.0), low(std::numeric_limits<double>::infinity()), high(0.0);
-        for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
-            const glm::dvec3& b = radiosity[display.weight_patch[k]];
-            sum += static_cast<double>(display.weight[k]) * b;
-            low = glm::min(low, b);
-            high = glm::max(high, b);
-        }
-        // Extrapolation overshoots beside a sharp edge in the light, and without bound where a patch's
-        // neighbours lie nearly in a line (small elements beside large ones): the vertex keeps within the
-        // range of the patches it is made from, widened by that range so a linear field's border vertices
-        // (half a patch or more beyond the last centroid, at a T-vertex) stay exact. Light is never negative.
-        const glm::dvec3 margin = kReconstructionMargin * (high - low);
-        sum = glm::clamp(sum, glm::max(low - margin, glm::dvec3(0.0)), high + margin);
-        if (share > 0.0) sum = glm::max(sum + share * glm::dvec3(display.direct.vertex[v]), 0.0);
-        radiance[v] = glm::vec3(sum / std::numbers::pi);
+        const bool row = gathers && gather.row_begin[v] != gather.row_begin[v + 1];
+        glm::dvec3 sum = row ? reconstruct(display, gather.emission, v) + gathered(gather, solution, v)
+                             : reconstruct(display, radiosity, v);
+        if (share > 0.0) sum += share * glm::dvec3(display.direct.vertex[v]);
+        radiance[v] = glm::vec3(glm::max(sum, 0.0) / std::numbers::pi);
     }
 }
 
 std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                                       std::optional<double> direct_share) {
+                                       std::optional<double> direct_share, bool final_gather) {
     std::vector<glm::vec3> radiance(display.vertex_count());
-    vertex_radiance(display, radiosity, radiance, direct_share);
+    vertex_radiance(display, radiosity, radiance, direct_share, final_gather);
     return radiance;
 }
 

@@ -14,6 +14,7 @@
 
 #include "display/display_edge_split.hpp"
 #include "display/vertex_emitters.hpp"
+#include "display/vertex_origin.hpp"
 #include "rad/display/false_colour.hpp"
 #include "rad/scene/scene.hpp"
 #include "sampling/power_draws.hpp"
@@ -27,8 +28,6 @@ namespace {
 
 // A key of the vertices' random streams, apart from every other pass's.
 constexpr std::uint64_t kVertexKey = 0x7e47'd1ec'0000'0001ull;
-// How far a vertex moves towards its patches' centroid before its rays leave, as a share of the way.
-constexpr double kTowardsCentroid = 1e-3;
 // Of kVertexShadowRays, how many tell first whether a vertex sees all of the light, or none.
 constexpr int kVertexFirstRays = 16;
 // A display edge is split where the direct light at its ends differs by more than kShadowEdgeContrast of the
@@ -56,20 +55,6 @@ struct Scratch {
     std::vector<std::uint8_t> blocked;
     std::vector<glm::dvec2> strata;
 };
-
-// Where vertex v's rays start: its position moved towards the centroid of the patches it shows.
-glm::dvec3 vertex_origin(const DisplayMesh& display, const PatchMesh& patches, std::size_t v) {
-    const glm::dvec3 position(display.positions[v]);
-    glm::dvec3 centre(0.0);
-    double total = 0.0;
-    for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
-        if (!(display.weight[k] > 0.0f)) continue;
-        centre += static_cast<double>(display.weight[k]) * patches.patches[display.weight_patch[k]].centroid;
-        total += display.weight[k];
-    }
-    if (!(total > 0.0)) return position;
-    return position + kTowardsCentroid * (centre / total - position);
-}
 
 struct Estimate {
     glm::dvec3 irradiance{0.0};

@@ -36,6 +36,10 @@ enum class ColourMode { smooth, flat };
 //          unlimited it would show bright and dark artifacts. Negative results are shown as 0.
 enum class Reconstruction { average, linear };
 
+// automatic: the builder decides by the transport (a hierarchy's leaves hold the light of links made for a
+//            larger receiver, uniform patches their own). on, off: always, never.
+enum class FinalGather { automatic, on, off };
+
 struct DisplayOptions {
     ColourMode mode = ColourMode::smooth;
     // Patches meeting at a corner share a vertex when their normals differ by less than this. 30° keeps the
@@ -46,6 +50,9 @@ struct DisplayOptions {
     // Smooth mode: whoever builds the display over a solved transport adds the emitters' direct light at
     // each vertex (add_vertex_direct_light, which traces rays; build_display_mesh does not).
     bool direct_light_at_vertices = true;
+    // Smooth mode: whether whoever builds the display over a solved transport gathers the last bounce at
+    // each vertex (add_vertex_final_gather).
+    FinalGather final_gather = FinalGather::automatic;
 };
 
 // What texel detail needs: the scene the patches were cut from (its textured surfaces) and the reflectance
@@ -104,6 +111,21 @@ struct DisplayMesh {
         std::vector<glm::vec3> vertex;     // per vertex ρ H_d at the vertex (H_d on textured surfaces)
     };
     DirectLight direct;
+    // The light the rest of the scene reflects, gathered at each vertex by rays (add_vertex_final_gather),
+    // or all empty. A vertex with a row shows the patches' reconstruction of `emission` alone, plus its
+    // direct light, plus its reflectance times Σ weight · (B − source) over its row's patches: the last
+    // bounce resolved at the vertex, not the patch. Vertices without a row (textured ones) show the
+    // reconstruction as before.
+    struct FinalGather {
+        std::vector<std::uint32_t> row_begin;  // per vertex + 1, into patch and weight; empty: no gather
+        std::vector<std::uint32_t> patch;
+        std::vector<float> weight;            // the share of the vertex's rays that met the patch's front
+        std::vector<glm::dvec3> reflectance;  // per vertex
+        std::vector<glm::dvec3> emission;     // per patch, what the patch's radiosity starts from
+        std::vector<glm::dvec3> source;       // per patch, what the vertices' direct light already holds
+        bool empty() const { return row_begin.empty(); }
+    };
+    FinalGather gather;
 
     std::size_t vertex_count() const { return positions.size(); }
 };
@@ -121,10 +143,13 @@ double direct_light_share(const DisplayMesh& display, std::span<const glm::dvec3
 // Solver's display_solution()). `direct_share` is what direct_light_share measures unless given: a view of
 // one bounce alone gives 1 for the first and 0 for the others.
 // Writes radiance[v] for every vertex; radiance must hold vertex_count() entries.
+// `final_gather` false shows the patches' reconstruction even where the vertices have a gather (a view of
+// one bounce's light, which is no solution to gather from).
 void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                     std::span<glm::vec3> radiance, std::optional<double> direct_share = {});
+                     std::span<glm::vec3> radiance, std::optional<double> direct_share = {},
+                     bool final_gather = true);
 std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                                       std::optional<double> direct_share = {});
+                                       std::optional<double> direct_share = {}, bool final_gather = true);
 
 // The radiance each vertex itself shows, from what vertex_radiance gave: a textured vertex's value times the
 // albedo at its texture coordinates, plus the surface's emitted radiance; other vertices as they are. What

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <span>
+
+#include "rad/display/display_mesh.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/ray/ray_scene.hpp"
+#include "rad/util/progress.hpp"
+
+namespace rad {
+
+// Most and fewest gather rays per display vertex; below the fewest the vertices keep the patches'
+// reconstruction (their noise would show).
+inline constexpr int kFinalGatherRays = 256;
+inline constexpr int kFinalGatherMinRays = 128;
+// The rays of one display's gather at most, so a mesh of many vertices takes fewer rays each.
+inline constexpr std::size_t kFinalGatherRayBudget = 32'000'000;
+
+struct VertexFinalGatherInput {
+    const PatchMesh* patches = nullptr;  // the patches the display mesh was built from
+    const RayScene* rays = nullptr;      // over the same patches
+    // Per patch: what its radiosity starts from in the transport (E, plus ρ H_out under a sky or sun), its
+    // reflectance, and what the vertices' direct light already holds of its radiosity (its E where the
+    // display traces the emitters' light at the vertices, else 0).
+    std::span<const glm::dvec3> emission{};
+    std::span<const glm::dvec3> reflectance{};
+    std::span<const glm::dvec3> source{};
+    std::uint64_t seed = 1;
+    std::size_t ray_budget = kFinalGatherRayBudget;
+    Progress* progress = nullptr;  // advanced per vertex; its cancel throws Cancelled
+};
+
+// Fills display.gather: a final gather (the last bounce taken at each vertex instead of each patch). From
+// each untextured vertex, cosine-weighted rays over a stratified square; each front a ray meets counts its
+// share of the rays, so a vertex's irradiance is Σ share · B of the patches met. Where a patch's radiosity
+// is right but its light varies across it (a corner, the floor beside a block), the vertex shows the
+// variation the patch's mean hides; the solution's own error arrives there once reflected. Leaves it empty
+// where the budget leaves fewer than kFinalGatherMinRays per vertex. Call it after the direct light (which
+// splits triangles). Throws std::invalid_argument when the arrays do not have one entry per patch.
+void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput& input);
+
+}  // namespace rad

@@ -1,0 +1,140 @@
+#include "rad/display/vertex_final_gather.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "display/vertex_origin.hpp"
+#include "sampling/sampling.hpp"
+#include "transport/uniform/form_factors_hemisphere.hpp"
+
+namespace rad {
+
+namespace {
+
+// A key of the gather's random streams, apart from every other pass's.
+constexpr std::uint64_t kGatherKey = 0x6a7e'f17a'1000'0001ull;
+
+bool is_textured(const DisplayMesh& display, std::uint32_t q) {
+    return !display.patch_irradiance.empty() && display.patch_irradiance[q].textured;
+}
+
+struct Row {
+    std::vector<std::uint32_t> patch;
+    std::vector<float> weight;
+};
+
+// What one thread's rows are traced with, kept between vertices.
+struct Scratch {
+    std::vector<Ray> rays;
+    std::vector<RayHit> hits;
+    std::vector<glm::dvec2> strata;
+    std::vector<std::uint32_t> met;
+};
+
+// Vertex v's row: the patches its rays meet from the front, each with its share of the rays.
+void gather_row(const DisplayMesh& display, const VertexFinalGatherInput& input, double offset, int count,
+                std::size_t v, Scratch& s, Row& row) {
+    const glm::dvec3 normal(display.normals[v]);
+    const double length = glm::length(normal);
+    if (!(length > 0.0)) return;  // no side to gather on: the vertex keeps its patches' reconstruction
+    const glm::dvec3 n = normal / length;
+    const glm::dvec3 origin = vertex_origin(display, *input.patches, v) + offset * n;
+    const Frame frame = frame_around(n);
+    RandomStream random(input.seed ^ kGatherKey, v);
+    s.strata.resize(static_cast<std::size_t>(count));
+    stratified_square(random, s.strata);
+    s.rays.clear();
+    for (const glm::dvec2& u : s.strata)
+        s.rays.push_back(Ray{origin, 0.0f, frame.to_world(cosine_direction(u))});
+    s.hits.resize(s.rays.size());
+    input.rays->intersect(s.rays, s.hits);
+    std::vector<std::uint32_t>& met = s.met;
+    met.clear();
+    for (const RayHit& hit : s.hits)
+        if (hit.patch != RayHit::kMissed && hit.patch != RayHit::kBackFace) met.push_back(hit.patch);
+    std::sort(met.begin(), met.end());
+    row.patch.clear();
+    row.weight.clear();
+    const float each = 1.0f / static_cast<float>(count);
+    for (std::size_t k = 0; k < met.size(); ++k) {
+        if (k > 0 && met[k] == met[k - 1]) {
+            row.weight.back() += each;
+            continue;
+        }
+        row.patch.push_back(met[k]);
+        row.weight.push_back(each);
+    }
+}
+
+// The vertex's reflectance: its patches' (one surface's), by their weights.
+glm::dvec3 vertex_reflectance(const DisplayMesh& display, std::span<const glm::dvec3> reflectance,
+                              std::size_t v) {
+    glm::dvec3 sum(0.0);
+    double total = 0.0;
+    for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
+        const double w = std::max(0.0f, display.weight[k]);
+        sum += w * reflectance[display.weight_patch[k]];
+        total += w;
+    }
+    return total > 0.0 ? sum / total : glm::dvec3(0.0);
+}
+
+}  // namespace
+
+void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput& input) {
+    const PatchMesh& patches = *input.patches;
+    const std::size_t n = patches.size();
+    if (input.emission.size() != n || input.reflectance.size() != n || input.source.size() != n ||
+        display.patch_count != n) {
+        throw std::invalid_argument("add_vertex_final_gather: the arrays do not have one entry per patch");
+    }
+    display.gather = {};
+    const std::size_t vertices = display.vertex_count();
+    if (vertices == 0) return;
+    const int count = static_cast<int>(std::min<std::size_t>(kFinalGatherRays, input.ray_budget / vertices));
+    if (count < kFinalGatherMinRays) return;
+    const double offset = ray_offset(patches);
+    Progress* progress = input.progress;
+    if (progress) {
+        progress->begin("final gather at the vertices", vertices);
+        progress->note(std::to_string(vertices) + " vertices x " + std::to_string(count) + " rays");
+    }
+    std::vector<Row> rows(vertices);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 64),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          Scratch scratch;
+                          if (progress && progress->cancelled()) throw Cancelled{};
+                          for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                              const std::uint32_t first = display.weight_begin[v];
+                              if (first == display.weight_begin[v + 1]) continue;
+                              if (is_textured(display, display.weight_patch[first])) continue;
+                              gather_row(display, input, offset, count, v, scratch, rows[v]);
+                          }
+                          if (progress) progress->advance(range.size());
+                      });
+    DisplayMesh::FinalGather& gather = display.gather;
+    std::size_t entries = 0;
+    for (const Row& row : rows) entries += row.patch.size();
+    gather.patch.reserve(entries);
+    gather.weight.reserve(entries);
+    gather.row_begin.reserve(vertices + 1);
+    gather.row_begin.push_back(0);
+    gather.reflectance.resize(vertices);
+    for (std::size_t v = 0; v < vertices; ++v) {
+        gather.patch.insert(gather.patch.end(), rows[v].patch.begin(), rows[v].patch.end());
+        gather.weight.insert(gather.weight.end(), rows[v].weight.begin(), rows[v].weight.end());
+        rows[v] = Row{};  // freed as it is copied: the rows and the table are not held twice
+        gather.row_begin.push_back(static_cast<std::uint32_t>(gather.patch.size()));
+        gather.reflectance[v] = vertex_reflectance(display, input.reflectance, v);
+    }
+    gather.emission.assign(input.emission.begin(), input.emission.end());
+    gather.source.assign(input.source.begin(), input.source.end());
+}
+
+}  // namespace rad

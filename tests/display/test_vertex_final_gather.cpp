@@ -1,0 +1,114 @@
+// The final gather at display vertices (add_vertex_final_gather): a vertex beside a wall of known radiosity
+// shows the closed-form point factor to it, and a furnace shows its exact radiosity at every vertex.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "rad/display/display_mesh.hpp"
+#include "rad/display/vertex_final_gather.hpp"
+#include "rad/geometry/point_polygon_factor.hpp"
+#include "rad/ray/ray_scene.hpp"
+#include "rad/scene/builtin_scenes.hpp"
+#include "solved_scene.hpp"
+
+namespace rad {
+namespace {
+
+struct Gathered {
+    std::unique_ptr<test::SolvedScene> solved;
+    DisplayMesh display;
+};
+
+// The display of `solved`'s patches with its final gather; `emission` and `source` per patch.
+Gathered gather(std::unique_ptr<test::SolvedScene> solved, const std::vector<glm::dvec3>& emission,
+                const std::vector<glm::dvec3>& source, std::size_t budget = kFinalGatherRayBudget) {
+    Gathered g{std::move(solved), {}};
+    const PatchMesh& patches = *g.solved->system.patches;
+    g.display = build_display_mesh(patches);
+    const RayScene rays(patches);
+    add_vertex_final_gather(g.display, {.patches = &patches,
+                                        .rays = &rays,
+                                        .emission = emission,
+                                        .reflectance = g.solved->system.transport->reflectance,
+                                        .source = source,
+                                        .ray_budget = budget});
+    return g;
+}
+
+std::uint32_t vertex_surface(const DisplayMesh& display, const PatchMesh& patches, std::size_t v) {
+    return patches.patches[display.weight_patch[display.weight_begin[v]]].surface;
+}
+
+TEST(FinalGather, AVertexBesideABrightFloorShowsItsPointFactor) {
+    // builtin:perpendicular: a unit floor (surface 0) and a unit wall (surface 1, ρ = 0.5) sharing an edge.
+    // With the floor at B = 1 and nothing else lit, a wall vertex shows ρ F(x → floor) / π, F the closed-form
+    // point-to-polygon factor; the wall's own patches (B = 0 here) take no part.
+    auto solved = test::solve_scene(make_perpendicular_squares(), Subdivision::uniform, 0.25);
+    const PatchMesh& patches = *solved->system.patches;
+    const std::size_t n = patches.size();
+    const std::vector<glm::dvec3> zero(n, glm::dvec3(0.0));
+    Gathered g = gather(std::move(solved), zero, zero);
+    ASSERT_FALSE(g.display.gather.empty());
+    std::vector<glm::dvec3> radiosity(n, glm::dvec3(0.0));
+    for (std::size_t q = 0; q < n; ++q)
+        if (patches.patches[q].surface == 0) radiosity[q] = glm::dvec3(1.0);
+    const std::vector<glm::vec3> shown = vertex_radiance(g.display, radiosity);
+    const glm::dvec3 floor[4] = {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}};
+    double sum = 0.0, worst = 0.0;
+    int counted = 0;
+    for (std::size_t v = 0; v < g.display.vertex_count(); ++v) {
+        if (vertex_surface(g.display, patches, v) != 1) continue;
+        const double exact = 0.5 *
+                             point_polygon_factor(glm::dvec3(g.display.positions[v]), {1, 0, 0}, floor) /
+                             std::numbers::pi;
+        const double error = std::abs(static_cast<double>(shown[v].x) - exact) / exact;
+        sum += error;
+        worst = std::max(worst, error);
+        ++counted;
+    }
+    ASSERT_GT(counted, 20);
+    // 256 stratified rays per vertex; the factor spans 0.5 at the edge to 0.03 at the far corners, where a
+    // ray's share is the most noise (13 % at worst here, 1 % on average).
+    EXPECT_LT(sum / counted, 0.02);
+    EXPECT_LT(worst, 0.2);
+    // Without the gather the wall shows its own patches: nothing.
+    const std::vector<glm::vec3> patches_only = vertex_radiance(g.display, radiosity, {}, false);
+    for (std::size_t v = 0; v < g.display.vertex_count(); ++v) {
+        if (vertex_surface(g.display, patches, v) != 1) continue;
+        EXPECT_EQ(patches_only[v].x, 0.0f);
+    }
+}
+
+TEST(FinalGather, AClusteredFurnaceShowsItsExactRadiosityAtEveryVertex) {
+    // Every face ρ = 0.5, E = 1: B = 2 everywhere, and every ray from a front meets a front.
+    auto solved = test::solve_scene(make_furnace(1000), Subdivision::clustered);
+    const std::vector<glm::dvec3> emission = solved->system.transport->emission;
+    const std::vector<glm::dvec3> radiosity = solved->radiosity;
+    const std::vector<glm::dvec3> zero(emission.size(), glm::dvec3(0.0));
+    const Gathered g = gather(std::move(solved), emission, zero);
+    ASSERT_FALSE(g.display.gather.empty());
+    const std::vector<glm::vec3> shown = vertex_radiance(g.display, radiosity);
+    double worst = 0.0;
+    for (const glm::vec3& l : shown)
+        worst = std::max(worst, std::abs(static_cast<double>(l.y) * std::numbers::pi - 2.0) / 2.0);
+    EXPECT_LT(worst, 2e-3);
+}
+
+TEST(FinalGather, BelowTheFewestRaysPerVertexTheDisplayKeepsItsPatches) {
+    auto solved = test::solve_scene(make_perpendicular_squares(), Subdivision::uniform, 0.25);
+    const std::vector<glm::dvec3> zero(solved->system.patches->size(), glm::dvec3(0.0));
+    const std::size_t vertices = build_display_mesh(*solved->system.patches).vertex_count();
+    const Gathered g = gather(std::move(solved), zero, zero, vertices * (kFinalGatherMinRays - 1));
+    EXPECT_TRUE(g.display.gather.empty());
+}
+
+TEST(FinalGather, ArraysOfAnotherSizeAreRefused) {
+    auto solved = test::solve_scene(make_perpendicular_squares(), Subdivision::uniform, 0.25);
+    const std::vector<glm::dvec3> short_array(1, glm::dvec3(0.0));
+    EXPECT_THROW(gather(std::move(solved), short_array, short_array), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rad
