@@ -301,7 +301,7 @@ void RadiosityPipeline::restart_from_solution() {
 }
 
 const DisplayMesh& RadiosityPipeline::display() const {
-    if (!display_) display_.emplace(build_display(options_.display));
+    prepare_display(nullptr);
     return *display_;
 }
 

@@ -110,12 +110,6 @@ class RadiosityPipeline {
     // prepare (a preview while the transport is built) no patch holds any of it yet: each vertex keeps its
     // own value, to be shown with direct_share 1 over preview_radiosity().
     void add_direct_light(DisplayMesh& display) const;
-    // Adds the final gather (add_vertex_final_gather) to a display mesh of patches(), after its direct
-    // light; nothing before prepare or a saved solution.
-    void add_final_gather(DisplayMesh& display, Progress* progress = nullptr) const;
-    // Whether build_display adds the final gather for this choice: automatic gathers over hierarchical and
-    // clustered transports.
-    bool gathers_at_vertices(FinalGather choice) const;
     // E per patch of patches(): the radiosity before any light is reflected.
     std::vector<glm::dvec3> preview_radiosity() const;
     // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the
@@ -144,6 +138,12 @@ class RadiosityPipeline {
 
   private:
     TransportSettings transport_settings() const;
+    // Adds the final gather (add_vertex_final_gather) to a display mesh of patches(), after its direct
+    // light; nothing before prepare or a saved solution.
+    void add_final_gather(DisplayMesh& display, Progress* progress) const;
+    // Whether build_display adds the final gather for this choice: automatic gathers over hierarchical and
+    // clustered transports.
+    bool gathers_at_vertices(FinalGather choice) const;
     // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
     std::vector<glm::dvec3> element_direct() const;
     void continue_saved();

@@ -305,7 +305,7 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
         radiosity = irradiance;
     }
     const DisplayMesh::FinalGather& gather = display.gather;
-    const bool gathers = final_gather && !gather.empty() && gather.source.size() == solution.size();
+    const bool gathers = final_gather && !gather.empty();
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) {
             radiance[v] = glm::vec3(0.0f);  // no patch: no light (and no range to keep within)

@@ -164,10 +164,6 @@ PointLight direct_irradiance(const glm::dvec3& origin, const glm::dvec3& n, cons
     return {share * first.irradiance + (1.0 - share) * rest.irradiance, Visibility::partial};
 }
 
-bool is_textured(const DisplayMesh& display, std::uint32_t q) {
-    return !display.patch_irradiance.empty() && display.patch_irradiance[q].textured;
-}
-
 // The triangles drawn between exact values at their corners do not keep a patch's mean where the light
 // curves over it (a chord lies below a concave falloff, above a convex one): each vertex moves by the mean
 // of its patches' shortfalls, weighted by the area of its triangles in each, so the patches show about the
@@ -193,7 +189,7 @@ void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> pa
         const std::uint32_t q = display.triangle_patch[t];
         if (!(area[q] > 0.0)) continue;
         glm::dvec3 held = patch_direct[q];
-        if (is_textured(display, q)) held *= display.patch_irradiance[q].inverse_albedo;
+        if (display.textured_patch(q)) held *= display.patch_irradiance[q].inverse_albedo;
         const glm::dvec3 shortfall = held - drawn[q] / area[q];
         for (int k = 0; k < 3; ++k) {
             shift[display.triangles[t][k]] += triangle_area[t] * shortfall;
@@ -347,7 +343,8 @@ void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput&
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;
         const std::uint32_t q = display.weight_patch[display.weight_begin[v]];
-        exact[v] = is_textured(display, q) ? light[v].irradiance : input.reflectance[q] * light[v].irradiance;
+        exact[v] =
+            display.textured_patch(q) ? light[v].irradiance : input.reflectance[q] * light[v].irradiance;
     }
     if (input.keep_patch_means) keep_patch_means(display, input.patch_direct, light, exact);
     std::vector<glm::vec3> vertex(display.vertex_count());

@@ -20,10 +20,6 @@ namespace {
 // A key of the gather's random streams, apart from every other pass's.
 constexpr std::uint64_t kGatherKey = 0x6a7e'f17a'1000'0001ull;
 
-bool is_textured(const DisplayMesh& display, std::uint32_t q) {
-    return !display.patch_irradiance.empty() && display.patch_irradiance[q].textured;
-}
-
 struct Row {
     std::vector<std::uint32_t> patch;
     std::vector<float> weight;
@@ -113,7 +109,7 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
                           for (std::size_t v = range.begin(); v != range.end(); ++v) {
                               const std::uint32_t first = display.weight_begin[v];
                               if (first == display.weight_begin[v + 1]) continue;
-                              if (is_textured(display, display.weight_patch[first])) continue;
+                              if (display.textured_patch(display.weight_patch[first])) continue;
                               gather_row(display, input, offset, count, v, scratch, rows[v]);
                           }
                           if (progress) progress->advance(range.size());

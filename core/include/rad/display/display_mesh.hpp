@@ -128,6 +128,10 @@ struct DisplayMesh {
     FinalGather gather;
 
     std::size_t vertex_count() const { return positions.size(); }
+    // Whether patch q's vertices carry irradiance under a texture.
+    bool textured_patch(std::uint32_t q) const {
+        return !patch_irradiance.empty() && patch_irradiance[q].textured;
+    }
 };
 
 // Throws std::invalid_argument for a crease angle outside [0°, 180°] or a reflectance of another size.
