@@ -1,6 +1,7 @@
 // The Embree interface: front and back faces, occlusion, misses, shared buffers and error routing.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -51,6 +52,42 @@ TEST(RayScene, OcclusionCountsBothSidesAndRespectsTheSegment) {
     std::vector<std::uint8_t> blocked(rays.size(), 7);
     scene.occluded(rays, blocked);
     EXPECT_EQ(blocked, (std::vector<std::uint8_t>{1, 0, 1, 0, 0}));
+}
+
+// A roof of one surface: two quads meeting at a ridge along z at (x, y) = (0, 1), one sloping down to each
+// side and facing out (up-left, up-right). A ray running along y = 1 crosses the ridge edge, meeting the
+// front of one slope and the back of the other at the same distance.
+PatchMesh ridge() {
+    PatchMesh mesh;
+    mesh.points = {{-1, 0, 0}, {-1, 0, 1}, {0, 1, 1}, {0, 1, 0}, {1, 0, 1}, {1, 0, 0}};
+    mesh.corners = {{0, 1, 2, 3}, {3, 2, 4, 5}};
+    const double s = 1.0 / std::sqrt(2.0);
+    mesh.patches = {Patch{0, 0, std::sqrt(2.0), {-0.5, 0.5, 0.5}, {-s, s, 0}},
+                    Patch{0, 1, std::sqrt(2.0), {0.5, 0.5, 0.5}, {s, s, 0}}};
+    mesh.surface_begin = {0, 2};
+    return mesh;
+}
+
+// The ray touched the roof's outside: it reaches the front, whichever of the two Embree met first.
+TEST(RayScene, ARayAlongARidgeReachesTheFrontItGrazes) {
+    const PatchMesh mesh = ridge();
+    const RayScene scene(mesh);
+    std::vector<Ray> rays;
+    for (int k = 1; k < 200; ++k) {
+        const double z = k / 200.0;
+        rays.push_back({{-2.0, 1.0, z}, 0.0f, {1, 0, 0}, 1e30f});  // front of patch 0, back of patch 1
+        rays.push_back({{2.0, 1.0, z}, 0.0f, {-1, 0, 0}, 1e30f});  // front of patch 1, back of patch 0
+    }
+    std::vector<RayHit> hits(rays.size());
+    scene.intersect(rays, hits);
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+        // A hit or a miss at the edge both happen (Embree's edge rule); a back never.
+        EXPECT_NE(hits[k].patch, RayHit::kBackFace) << "ray " << k;
+        if (hits[k].patch != RayHit::kMissed) {
+            EXPECT_EQ(hits[k].patch, k % 2 == 0 ? 0u : 1u) << "ray " << k;
+            EXPECT_NEAR(hits[k].t, 2.0f, 1e-5f) << "ray " << k;
+        }
+    }
 }
 
 // Batches longer than Embree's stream of 64 rays, with a remainder, come back in order.
