@@ -235,8 +235,9 @@ CommandRunner add_render_command(CLI::App& app) {
     render
         ->add_option("--final-gather", options->pipeline.display.final_gather,
                      "The last bounce gathered at each vertex by rays, for light that varies across a patch: "
-                     "auto (the default: for hierarchical and clustered solutions, whose leaves take light "
-                     "linked to larger elements), on or off")
+                     "auto (the default: every vertex of hierarchical and clustered solutions, whose leaves "
+                     "take light linked to larger elements; over uniform patches the vertices beside another "
+                     "surface, where the light varies faster than the patches), on (every vertex) or off")
         ->transform(CLI::CheckedTransformer(gathers, CLI::ignore_case));
     add_gl_platform_option(*render, options->gl_platform);
     return [render, options]() -> int {

@@ -332,19 +332,21 @@ void RadiosityPipeline::prepare_display(Progress* progress) const {
 DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Progress* progress) const {
     DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
     if (options.mode == ColourMode::smooth && options.direct_light_at_vertices) add_direct_light(display);
-    if (options.mode == ColourMode::smooth && gathers_at_vertices(options.final_gather))
-        add_final_gather(display, progress);
+    if (options.mode == ColourMode::smooth && options.final_gather != FinalGather::off)
+        add_final_gather(display, gathers_near_surfaces_only(options.final_gather), progress);
     return display;
 }
 
-bool RadiosityPipeline::gathers_at_vertices(FinalGather choice) const {
-    if (choice != FinalGather::automatic) return choice == FinalGather::on;
-    // Uniform patches resolve their own light; a hierarchy's leaves take light linked to larger receivers,
-    // constant over them (docs/measurements.md, "Final gather").
-    return subdivision_ == Subdivision::hierarchical || subdivision_ == Subdivision::clustered;
+bool RadiosityPipeline::gathers_near_surfaces_only(FinalGather choice) const {
+    // Uniform patches resolve their own light but for its variation beside other surfaces; a hierarchy's
+    // leaves take light linked to larger receivers, constant over them (docs/measurements.md, "Final
+    // gather").
+    return choice == FinalGather::automatic &&
+           (subdivision_ == Subdivision::uniform || subdivision_ == Subdivision::adaptive);
 }
 
-void RadiosityPipeline::add_final_gather(DisplayMesh& display, Progress* progress) const {
+void RadiosityPipeline::add_final_gather(DisplayMesh& display, bool near_surfaces_only,
+                                         Progress* progress) const {
     std::span<const glm::dvec3> emission, reflectance;
     if (built_.transport) {
         emission = built_.transport->emission;
@@ -366,6 +368,7 @@ void RadiosityPipeline::add_final_gather(DisplayMesh& display, Progress* progres
                                       .reflectance = reflectance,
                                       .source = source,
                                       .seed = options_.form_factors.seed,
+                                      .near_surfaces_only = near_surfaces_only,
                                       .progress = progress});
 }
 

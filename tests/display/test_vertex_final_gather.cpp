@@ -23,7 +23,8 @@ struct Gathered {
 
 // The display of `solved`'s patches with its final gather; `emission` and `source` per patch.
 Gathered gather(std::unique_ptr<test::SolvedScene> solved, const std::vector<glm::dvec3>& emission,
-                const std::vector<glm::dvec3>& source, std::size_t budget = kFinalGatherRayBudget) {
+                const std::vector<glm::dvec3>& source, std::size_t budget = kFinalGatherRayBudget,
+                bool near_surfaces_only = false) {
     Gathered g{std::move(solved), {}};
     const PatchMesh& patches = *g.solved->system.patches;
     g.display = build_display_mesh(patches);
@@ -33,7 +34,8 @@ Gathered gather(std::unique_ptr<test::SolvedScene> solved, const std::vector<glm
                                         .emission = emission,
                                         .reflectance = g.solved->system.transport->reflectance,
                                         .source = source,
-                                        .ray_budget = budget});
+                                        .ray_budget = budget,
+                                        .near_surfaces_only = near_surfaces_only});
     return g;
 }
 
@@ -84,6 +86,36 @@ TEST(FinalGather, AVertexBesideABrightFloorShowsItsPointFactor) {
         if (vertex_surface(g.display, patches, v) != 1) continue;
         EXPECT_EQ(patches_only[v].x, 0.0f);
     }
+}
+
+TEST(FinalGather, NearSurfacesOnlyTheFloorBesideTheWallGathers) {
+    // builtin:perpendicular at patch size 0.1: a floor vertex farther than two patch sizes (0.2) from the
+    // wall meets nothing that near and keeps its patches; one within half a patch size of it sends half its
+    // rays into the wall, most of them nearer than 0.2, and gathers with kNearGatherRays rays.
+    auto solved = test::solve_scene(make_perpendicular_squares(), Subdivision::uniform, 0.1);
+    const PatchMesh& patches = *solved->system.patches;
+    const std::vector<glm::dvec3> zero(patches.size(), glm::dvec3(0.0));
+    const Gathered g = gather(std::move(solved), zero, zero, kFinalGatherRayBudget, true);
+    ASSERT_FALSE(g.display.gather.empty());
+    const DisplayMesh::FinalGather& rows = g.display.gather;
+    int far = 0, near = 0;
+    for (std::size_t v = 0; v < g.display.vertex_count(); ++v) {
+        if (vertex_surface(g.display, *g.solved->system.patches, v) != 0) continue;
+        const double to_wall = g.display.positions[v].x;  // the wall stands at x = 0
+        const std::uint32_t begin = rows.row_begin[v], end = rows.row_begin[v + 1];
+        if (to_wall > 0.2 + 1e-9) {
+            EXPECT_EQ(begin, end) << "vertex at x = " << to_wall;
+            ++far;
+        } else if (to_wall < 0.05) {
+            ASSERT_LT(begin, end) << "vertex at x = " << to_wall;
+            float least = 1.0f;
+            for (std::uint32_t k = begin; k < end; ++k) least = std::min(least, rows.weight[k]);
+            EXPECT_FLOAT_EQ(least * kNearGatherRays, std::round(least * kNearGatherRays));
+            ++near;
+        }
+    }
+    EXPECT_GT(far, 50);
+    EXPECT_GT(near, 5);
 }
 
 TEST(FinalGather, AClusteredFurnaceShowsItsExactRadiosityAtEveryVertex) {

@@ -26,6 +26,9 @@ PipelineOptions cornell(double patch_size) {
     // The area-weighted average is linear in B, so the radiance of one bounce alone is the difference of
     // two cumulative ones; linear reconstruction clamps negative extrapolations to 0, which is not.
     options.display.reconstruction = Reconstruction::average;
+    // The gathered view is one bounce ahead of the step it draws, and the bounce views show the patches;
+    // these tests compare one with the other, bounce by bounce.
+    options.display.final_gather = FinalGather::off;
     return options;
 }
 

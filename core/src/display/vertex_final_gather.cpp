@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,36 @@ struct Scratch {
     std::vector<std::uint32_t> met;
 };
 
+// Traces `count` cosine-weighted rays from origin around the frame's normal into s.hits.
+void trace_rays(const VertexFinalGatherInput& input, const glm::dvec3& origin, const Frame& frame, int count,
+                RandomStream& random, Scratch& s) {
+    s.strata.resize(static_cast<std::size_t>(count));
+    stratified_square(random, s.strata);
+    s.rays.clear();
+    for (const glm::dvec2& u : s.strata)
+        s.rays.push_back(Ray{origin, 0.0f, frame.to_world(cosine_direction(u))});
+    s.hits.resize(s.rays.size());
+    input.rays->intersect(s.rays, s.hits);
+}
+
+// The edge of the largest patch at vertex v, as the square root of its area.
+double vertex_patch_size(const DisplayMesh& display, const PatchMesh& patches, std::size_t v) {
+    double area = 0.0;
+    for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k)
+        area = std::max(area, patches.patches[display.weight_patch[k]].area);
+    return std::sqrt(area);
+}
+
+// Whether a probe ray from origin meets a surface within kNearPatchSizes of vertex v's patch size.
+bool near_a_surface(const DisplayMesh& display, const VertexFinalGatherInput& input, const glm::dvec3& origin,
+                    const Frame& frame, std::size_t v, RandomStream& random, Scratch& s) {
+    trace_rays(input, origin, frame, kNearProbeRays, random, s);
+    const double near = kNearPatchSizes * vertex_patch_size(display, *input.patches, v);
+    for (const RayHit& hit : s.hits)
+        if (hit.patch != RayHit::kMissed && static_cast<double>(hit.t) < near) return true;
+    return false;
+}
+
 // Vertex v's row: the patches its rays meet from the front, each with its share of the rays.
 void gather_row(const DisplayMesh& display, const VertexFinalGatherInput& input, double offset, int count,
                 std::size_t v, Scratch& s, Row& row) {
@@ -43,13 +74,8 @@ void gather_row(const DisplayMesh& display, const VertexFinalGatherInput& input,
     const glm::dvec3 origin = vertex_origin(display, *input.patches, v) + offset * n;
     const Frame frame = frame_around(n);
     RandomStream random(input.seed ^ kGatherKey, v);
-    s.strata.resize(static_cast<std::size_t>(count));
-    stratified_square(random, s.strata);
-    s.rays.clear();
-    for (const glm::dvec2& u : s.strata)
-        s.rays.push_back(Ray{origin, 0.0f, frame.to_world(cosine_direction(u))});
-    s.hits.resize(s.rays.size());
-    input.rays->intersect(s.rays, s.hits);
+    if (input.near_surfaces_only && !near_a_surface(display, input, origin, frame, v, random, s)) return;
+    trace_rays(input, origin, frame, count, random, s);
     std::vector<std::uint32_t>& met = s.met;
     met.clear();
     for (const RayHit& hit : s.hits)
@@ -93,8 +119,9 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
     display.gather = {};
     const std::size_t vertices = display.vertex_count();
     if (vertices == 0) return;
-    const int count = static_cast<int>(std::min<std::size_t>(kFinalGatherRays, input.ray_budget / vertices));
-    if (count < kFinalGatherMinRays) return;
+    const int most = input.near_surfaces_only ? kNearGatherRays : kFinalGatherRays;
+    const int count = static_cast<int>(std::min<std::size_t>(most, input.ray_budget / vertices));
+    if (count < (input.near_surfaces_only ? kNearGatherMinRays : kFinalGatherMinRays)) return;
     const double offset = ray_offset(patches);
     Progress* progress = input.progress;
     if (progress) {

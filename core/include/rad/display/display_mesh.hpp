@@ -36,8 +36,10 @@ enum class ColourMode { smooth, flat };
 //          unlimited it would show bright and dark artifacts. Negative results are shown as 0.
 enum class Reconstruction { average, linear };
 
-// automatic: the builder decides by the transport (a hierarchy's leaves hold the light of links made for a
-//            larger receiver, uniform patches their own). on, off: always, never.
+// automatic: the builder decides by the transport: a hierarchy's leaves hold the light of links made for a
+//            larger receiver, so every vertex gathers; uniform patches hold their own, so only vertices
+//            beside another surface gather (VertexFinalGatherInput::near_surfaces_only). on: every vertex.
+//            off: none.
 enum class FinalGather { automatic, on, off };
 
 struct DisplayOptions {

@@ -18,6 +18,13 @@ inline constexpr int kFinalGatherRays = 256;
 inline constexpr int kFinalGatherMinRays = 128;
 // The rays of one display's gather at most, so a mesh of many vertices takes fewer rays each.
 inline constexpr std::size_t kFinalGatherRayBudget = 32'000'000;
+// A gather near surfaces only (near_surfaces_only): the rays of a vertex that gathers, and the fewest worth
+// tracing (fewer are noisier than the patches' means they replace); the probe rays that look for a surface
+// within kNearPatchSizes of the vertex's patch size.
+inline constexpr int kNearGatherRays = 1024;
+inline constexpr int kNearGatherMinRays = 512;
+inline constexpr int kNearProbeRays = 64;
+inline constexpr double kNearPatchSizes = 2.0;
 
 struct VertexFinalGatherInput {
     const PatchMesh* patches = nullptr;  // the patches the display mesh was built from
@@ -30,6 +37,11 @@ struct VertexFinalGatherInput {
     std::span<const glm::dvec3> source{};
     std::uint64_t seed = 1;
     std::size_t ray_budget = kFinalGatherRayBudget;
+    // Where patches hold their own light (uniform patches), their means are right and their reconstruction
+    // is smooth; only beside another surface (a corner, a block's foot) does the light vary across a patch
+    // faster than it shows. Then only vertices whose probe rays meet a surface within kNearPatchSizes of
+    // their largest patch's size gather, with kNearGatherRays rays; the others keep the reconstruction.
+    bool near_surfaces_only = false;
     Progress* progress = nullptr;  // advanced per vertex; its cancel throws Cancelled
 };
 
@@ -38,8 +50,9 @@ struct VertexFinalGatherInput {
 // share of the rays, so a vertex's irradiance is Σ share · B of the patches met. Where a patch's radiosity
 // is right but its light varies across it (a corner, the floor beside a block), the vertex shows the
 // variation the patch's mean hides; the solution's own error arrives there once reflected. Leaves it empty
-// where the budget leaves fewer than kFinalGatherMinRays per vertex. Call it after the direct light (which
-// splits triangles). Throws std::invalid_argument when the arrays do not have one entry per patch.
+// where the budget leaves fewer than kFinalGatherMinRays per vertex (kNearGatherMinRays near surfaces only).
+// Call it after the direct light (which splits triangles). Throws std::invalid_argument when the arrays do
+// not have one entry per patch.
 void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput& input);
 
 }  // namespace rad
