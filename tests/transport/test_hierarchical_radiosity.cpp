@@ -115,7 +115,10 @@ TEST(Hierarchical, CornellAgainstAFineUniformSolve) {
             tolerance, h.report.base_patches, h.report.elements, h.report.leaves, h.report.links,
             h.report.rounds, seconds, h.report.refine_seconds, h.report.solve_seconds,
             h.report.memory_bytes / 1e6, 100.0 * worst);
-        EXPECT_LT(worst, 0.025);  // 1.7 % and 0.7 % measured
+        // 2.8 % and 2.1 % measured, the floor too bright (the light's links to it), every other surface
+        // within 0.9 %; before the leaves were balanced, 1.9 % and 1.1 %, every surface too bright while the
+        // energy account lost 5 % of the light.
+        EXPECT_LT(worst, 0.03);
         EXPECT_LT(h.report.links, 40'000u) << "links, against " << fine.size() << "² pairs of the reference";
     }
 }

@@ -126,7 +126,8 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
     Progress* progress = input.progress;
     if (progress) {
         progress->begin("final gather at the vertices", vertices);
-        progress->note(std::to_string(vertices) + " vertices x " + std::to_string(count) + " rays");
+        progress->note(std::to_string(vertices) + " vertices x " + std::to_string(count) + " rays" +
+                       (input.near_surfaces_only ? " where a surface is near" : ""));
     }
     std::vector<Row> rows(vertices);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 64),

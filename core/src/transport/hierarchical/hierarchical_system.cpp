@@ -96,7 +96,9 @@ std::size_t HierarchicalSystem::memory_bytes() const {
            receiver_runs.capacity() * sizeof(std::uint32_t) +
            (reflectance.capacity() + emission.capacity()) * sizeof(glm::dvec3) +
            leaves.capacity() * sizeof(std::uint32_t) +
-           (exposed_share.capacity() + leaf_scale.capacity() + escaping_share.capacity()) * sizeof(float);
+           (exposed_share.capacity() + leaf_scale.capacity() + send_scale.capacity() +
+            escaping_share.capacity() + reaching_share.capacity()) *
+               sizeof(float);
 }
 
 std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene, const PatchMesh& base,
@@ -151,6 +153,9 @@ std::unique_ptr<HierarchicalSystem> build_hierarchical_system(const Scene& scene
         solve_roughly(*system, refiner.radiosity());
         report.solve_seconds += solve_clock.seconds();
     }
+    if (progress) progress->begin("balancing the leaves' energy", 0);
+    system->reaching_share = refiner.measure_reaching();
+    balance_leaf_form_factors(*system, system->reaching_share);
     finish_leaves(*system);
     report.elements = system->tree.size();
     report.leaves = system->leaves.size();

@@ -9,17 +9,11 @@
 #include <glm/common.hpp>
 
 #include "rad/transport/hierarchical/hierarchical_radiosity.hpp"
+#include "transport/hierarchical/hierarchical_corners.hpp"
 
 namespace rad {
 
 namespace {
-
-double exposed(const HierarchicalSystem& system, std::uint32_t e) {
-    return std::max(0.0, static_cast<double>(system.exposed_share[e]));
-}
-
-// Irradiance at an element's corners (a triangle uses three).
-using CornerIrradiance = std::array<glm::dvec3, 4>;
 
 // Irradiance gathered by each element along its own links, at its corners.
 // `gathered` is all zero on entry and holds one entry per element; only receivers' entries are written.
@@ -48,21 +42,6 @@ void clear_gathered(const HierarchicalSystem& system, std::span<CornerIrradiance
         gathered[system.links[system.receiver_runs[k]].receiver] = CornerIrradiance{};
 }
 
-// The irradiance at the children's corners, interpolated from the parent's (ElementTree::split's layout).
-std::array<CornerIrradiance, 4> child_corners(const CornerIrradiance& h, bool triangle) {
-    const glm::dvec3 m01 = 0.5 * (h[0] + h[1]), m12 = 0.5 * (h[1] + h[2]);
-    if (triangle) {
-        const glm::dvec3 m20 = 0.5 * (h[2] + h[0]);
-        return {{{h[0], m01, m20, m20}, {m01, h[1], m12, m12}, {m20, m12, h[2], h[2]}, {m01, m12, m20, m20}}};
-    }
-    const glm::dvec3 m23 = 0.5 * (h[2] + h[3]), m30 = 0.5 * (h[3] + h[0]);
-    const glm::dvec3 centre = 0.25 * (h[0] + h[1] + h[2] + h[3]);
-    return {{{h[0], m01, centre, m30},
-             {m01, h[1], m12, centre},
-             {centre, m12, h[2], m23},
-             {m30, centre, m23, h[3]}}};
-}
-
 // Pushes the irradiance gathered above down to the leaves, where B = E + ρ × the irradiance's mean over the
 // leaf, and pulls the area-weighted mean of the children back up into every inner element.
 void push_pull(const HierarchicalSystem& system, std::uint32_t e, const CornerIrradiance& above,
@@ -85,15 +64,10 @@ void push_pull(const HierarchicalSystem& system, std::uint32_t e, const CornerIr
     const std::array<CornerIrradiance, 4> below = child_corners(irradiance, element.is_triangle());
     glm::dvec3 sum(0.0);
     double area = 0.0;
-    const double parent_exposed = exposed(system, e);
     for (std::uint32_t c = 0; c < 4; ++c) {
         const std::uint32_t child = element.first_child + c;
-        // The irradiance above is a mean over the whole parent, its covered part's zeros included; a child
-        // gets the exposed part's irradiance times its own exposed share.
         CornerIrradiance pushed = below[c];
-        const double share = parent_exposed > 0.0
-                                 ? std::min(1.0 / parent_exposed, exposed(system, child) / parent_exposed)
-                                 : 0.0;
+        const double share = pushed_share(system, e, child);
         for (glm::dvec3& h : pushed) h *= share;
         push_pull(system, child, pushed, gathered, out, irradiance_out);
         sum += system.tree[child].shape.area * out[child];
@@ -108,8 +82,11 @@ void push_pull(const HierarchicalSystem& system, std::uint32_t e, const CornerIr
 void element_radiosity(const HierarchicalSystem& system, std::span<const glm::dvec3> leaf_radiosity,
                        std::vector<glm::dvec3>& b) {
     b.assign(system.tree.size(), glm::dvec3(0.0));
-    for (std::size_t k = 0; k < system.leaves.size(); ++k)
-        b[system.leaves[k]] = leaf_radiosity[k] * exposed(system, system.leaves[k]);
+    for (std::size_t k = 0; k < system.leaves.size(); ++k) {
+        const std::uint32_t e = system.leaves[k];
+        const double sent = system.send_scale.empty() ? 1.0 : static_cast<double>(system.send_scale[e]);
+        b[e] = leaf_radiosity[k] * (exposed(system, e) * sent);
+    }
     for (std::size_t e = b.size(); e-- > 0;) {
         const Element& element = system.tree[e];
         if (element.is_leaf()) continue;
@@ -147,31 +124,6 @@ void gather_push_pull(const HierarchicalSystem& system, std::span<const glm::dve
     clear_gathered(system, gathered);
 }
 
-void normalize_leaf_form_factors(HierarchicalSystem& system, std::span<const float> reaching) {
-    const std::size_t n = system.tree.size();
-    system.leaf_scale.clear();
-    // What each leaf gathers when every exposed part shines with radiosity 1: its links' form-factor sum
-    // over the scene, times its exposed_share.
-    std::vector<glm::dvec3> exposed_one(n), out(n), gathered(n, glm::dvec3(0.0));
-    for (std::size_t e = 0; e < n; ++e)
-        exposed_one[e] = glm::dvec3(exposed(system, static_cast<std::uint32_t>(e)));
-    gather_push_pull(system, exposed_one, out, gathered);
-    system.leaf_scale.assign(n, 1.0f);
-    for (std::uint32_t e = 0; e < n; ++e) {
-        if (!system.tree[e].is_leaf() || !(gathered[e].x > 0.0) || !(reaching[e] >= 0.0f)) continue;
-        // The measurement is a share of kReachingRays rays: move towards it only by what exceeds twice its
-        // standard error, so an open scene's leaves (where some rays leave) do not take on its noise, while
-        // in a closed room (no ray leaves, no noise) every leaf sums to exactly 1.
-        const double exposed_share = std::max(1e-6, exposed(system, e));
-        const double measured = reaching[e], links = gathered[e].x;
-        const double share = std::min(1.0, measured / exposed_share);  // of the rays from exposed points
-        const double noise = exposed_share * std::sqrt(share * (1.0 - share) / kReachingRays);
-        const double excess = std::max(0.0, std::abs(measured - links) - 2.0 * noise);
-        const double target = links + std::copysign(excess, measured - links);
-        system.leaf_scale[e] = static_cast<float>(std::clamp(target / links, 0.0, 4.0));
-    }
-}
-
 HierarchicalTransport::HierarchicalTransport(std::unique_ptr<HierarchicalSystem> system,
                                              const HierarchicalReport& report)
     : system_(std::move(system)), report_(report) {
@@ -202,24 +154,38 @@ void HierarchicalTransport::gather(std::span<const glm::dvec3> radiosity,
 }
 
 std::vector<double> HierarchicalTransport::reach() const {
-    const HierarchicalSystem& h = *system_;
-    const std::size_t n = h.tree.size();
-    std::vector<glm::dvec3> ones(n, glm::dvec3(1.0)), out(n), reached(n, glm::dvec3(0.0));
-    gather_push_pull(h, ones, out, reached);
-    std::vector<double> reach(h.leaves.size());
-    for (std::size_t k = 0; k < reach.size(); ++k)
-        reach[k] = std::min(1.0, reached[h.leaves[k]].x * per_exposed_area(h, h.leaves[k]));
+    const std::vector<glm::dvec3> ones(size(), glm::dvec3(1.0));
+    std::vector<glm::dvec3> reached(size());
+    gather(ones, reached);
+    std::vector<double> reach(size());
+    for (std::size_t k = 0; k < reach.size(); ++k) reach[k] = std::min(1.0, reached[k].x);
     return reach;
 }
 
 std::vector<double> HierarchicalTransport::escape() const {
     const HierarchicalSystem& h = *system_;
-    std::vector<double> share(h.leaves.size(), 1.0);  // not measured: all of 1 − reach
-    for (std::size_t k = 0; k < share.size(); ++k) {
+    // What does not reach a front (1 − reach) meets a back as often as the leaf's rays found; the rest
+    // escapes. Taking the leaf's measured escape instead would split the difference between its reach and
+    // its measure at random between the escape and the backs. Not measured: all of 1 − reach escapes.
+    const std::vector<double> reached = reach();
+    std::vector<double> out(h.leaves.size(), 1.0);
+    for (std::size_t k = 0; k < out.size(); ++k) {
         const std::uint32_t e = h.leaves[k];
-        if (e < h.escaping_share.size() && h.escaping_share[e] >= 0.0f) share[k] = h.escaping_share[e];
+        if (e >= h.escaping_share.size() || e >= h.reaching_share.size() || h.escaping_share[e] < 0.0f ||
+            h.reaching_share[e] < 0.0f)
+            continue;
+        const double escape = h.escaping_share[e];
+        const double exposed_share = exposed(h, e);
+        if (!(escape > 0.0) || !(exposed_share > 0.0)) {
+            out[k] = 0.0;
+            continue;
+        }
+        const double front = std::min(1.0, static_cast<double>(h.reaching_share[e]) / exposed_share);
+        const double back = std::max(0.0, 1.0 - front - escape);
+        const double lost = std::max(0.0, 1.0 - reached[k]);
+        out[k] = std::clamp(lost - back, 0.0, lost);
     }
-    return share;
+    return out;
 }
 
 TransportReport HierarchicalTransport::report() const {

@@ -95,9 +95,15 @@ struct HierarchicalSystem {
     // where three surfaces meet); at high albedo that error would be multiplied bounce after bounce.
     // Empty: no scaling.
     std::vector<float> leaf_scale;
+    // Per element (leaves only; 1 elsewhere), what scales the light a leaf sends into the links, set with
+    // leaf_scale by balance_leaf_form_factors so that each leaf sends what it gathers. Empty: no scaling.
+    std::vector<float> send_scale;
     // Per element: the measured share of the rays from its exposed part that meet nothing (negative: not
     // measured).
     std::vector<float> escaping_share;
+    // Per element: the measured share of the rays from its exposed part that meet a front, times its
+    // exposed share (negative: not measured); what the balance scaled the leaves towards.
+    std::vector<float> reaching_share;
     std::vector<std::uint32_t> leaves;  // leaf elements; patch k of leaf_patches is leaves[k]
     PatchMesh leaf_patches;
 
@@ -127,6 +133,19 @@ inline constexpr int kReachingRays = 64;
 // Sets leaf_scale from the links as they stand and, per element, its measured form factor to the whole
 // scene times its exposed_share (negative: not measured, no scaling).
 void normalize_leaf_form_factors(HierarchicalSystem& system, std::span<const float> reaching);
+
+// Sets leaf_scale and send_scale so that the leaves' gather T' = diag(leaf_scale) T diag(send_scale) has,
+// for every leaf, the row sum (what it gathers of a uniform radiosity) and the column share (what arrives
+// somewhere of its own light, per unit of exposed area) both at the row target normalize_leaf_form_factors
+// scales to: light then leaves each leaf in the amount it arrives, and emitted = absorbed + escaped holds
+// for any radiosity (the links alone are not reciprocal). Sinkhorn's alternation, as clustering's balance;
+// both scales at most 64. Returns the largest row error left.
+double balance_leaf_form_factors(HierarchicalSystem& system, std::span<const float> reaching);
+
+// The transpose of the leaves' gather with leaf_scale as it stands, send_scale left out: per leaf s,
+// Σ_k weights[k] × (the mean irradiance over leaf k when s's exposed part alone shines with radiosity 1).
+// One entry per element in both spans; the leaves' are read and written.
+void spread_leaves(const HierarchicalSystem& system, std::span<const double> weights, std::span<double> out);
 
 // Hierarchical radiosity as a Transport: its elements are the leaves (patch k of leaf_patches is leaf k), and
 // gather pulls the leaves' radiosity up the trees, gathers along the links and pushes the irradiance down to
