@@ -230,14 +230,18 @@ CommandRunner add_render_command(CLI::App& app) {
     add_export_option(*render, options->exports);
     render->add_flag("--flat", options->flat, "Show each patch's own radiosity instead of interpolating");
     render->add_flag("--outline", options->outline, "Draw the patches' edges");
-    const std::map<std::string, FinalGather> gathers{
-        {"auto", FinalGather::automatic}, {"on", FinalGather::on}, {"off", FinalGather::off}};
+    const std::map<std::string, FinalGather> gathers{{"auto", FinalGather::automatic},
+                                                     {"near", FinalGather::near},
+                                                     {"on", FinalGather::on},
+                                                     {"off", FinalGather::off}};
     render
-        ->add_option("--final-gather", options->pipeline.display.final_gather,
-                     "The last bounce gathered at each vertex by rays, for light that varies across a patch: "
-                     "auto (the default: every vertex of hierarchical and clustered solutions, whose leaves "
-                     "take light linked to larger elements; over uniform patches the vertices beside another "
-                     "surface, where the light varies faster than the patches), on (every vertex) or off")
+        ->add_option(
+            "--final-gather", options->pipeline.display.final_gather,
+            "The last bounce gathered at each vertex by rays, for light that varies across a patch: "
+            "auto (the default: every vertex of hierarchical and clustered solutions, whose leaves "
+            "take light linked to larger elements; none over uniform patches), near (only the vertices "
+            "beside another surface, 1024 rays each: corners and contact, where uniform patches blur), "
+            "on (every vertex) or off")
         ->transform(CLI::CheckedTransformer(gathers, CLI::ignore_case));
     add_gl_platform_option(*render, options->gl_platform);
     return [render, options]() -> int {

@@ -332,17 +332,17 @@ void RadiosityPipeline::prepare_display(Progress* progress) const {
 DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Progress* progress) const {
     DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
     if (options.mode == ColourMode::smooth && options.direct_light_at_vertices) add_direct_light(display);
-    if (options.mode == ColourMode::smooth && options.final_gather != FinalGather::off)
-        add_final_gather(display, gathers_near_surfaces_only(options.final_gather), progress);
+    if (options.mode == ColourMode::smooth && gathers_at_vertices(options.final_gather))
+        add_final_gather(display, options.final_gather == FinalGather::near, progress);
     return display;
 }
 
-bool RadiosityPipeline::gathers_near_surfaces_only(FinalGather choice) const {
-    // Uniform patches resolve their own light but for its variation beside other surfaces; a hierarchy's
-    // leaves take light linked to larger receivers, constant over them (docs/measurements.md, "Final
-    // gather").
-    return choice == FinalGather::automatic &&
-           (subdivision_ == Subdivision::uniform || subdivision_ == Subdivision::adaptive);
+bool RadiosityPipeline::gathers_at_vertices(FinalGather choice) const {
+    if (choice != FinalGather::automatic) return choice != FinalGather::off;
+    // A hierarchy's leaves take light linked to larger receivers, constant over them; uniform patches hold
+    // their own, and a gather at points would alias where the light varies faster than the vertices (a
+    // ceiling under rows of small lamps): docs/measurements.md, "Final gather".
+    return subdivision_ == Subdivision::hierarchical || subdivision_ == Subdivision::clustered;
 }
 
 void RadiosityPipeline::add_final_gather(DisplayMesh& display, bool near_surfaces_only,

@@ -109,6 +109,17 @@ TEST(RenderCommand, ClusteredFurnaceWithItsFinalGatherShowsEOverOneMinusRhoOverP
     EXPECT_LT(worst_furnace_error(image), 0.005f);
 }
 
+// The furnace of uniform patches gathered near surfaces (`near`): the room's corners gather, with every ray
+// meeting a face of B = 2, and stay exact.
+TEST(RenderCommand, UniformFurnaceGatheredNearSurfacesShowsEOverOneMinusRhoOverPi) {
+    test::TempDir dir;
+    const Image image =
+        render({write_furnace(dir), "--patch-size", "0.25", "--final-gather", "near", "--width", "96",
+                "--height", "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
+               (dir.path() / "furnace.pfm").string());
+    EXPECT_LT(worst_furnace_error(image), 0.005f);
+}
+
 TEST(RenderCommand, FlatModeShowsThePatchsOwnRadiosityAtItsCentre) {
     test::TempDir dir;
     // builtin:parallel at one patch per square: look up at the upper square's front (it faces down).

@@ -37,10 +37,10 @@ enum class ColourMode { smooth, flat };
 enum class Reconstruction { average, linear };
 
 // automatic: the builder decides by the transport: a hierarchy's leaves hold the light of links made for a
-//            larger receiver, so every vertex gathers; uniform patches hold their own, so only vertices
-//            beside another surface gather (VertexFinalGatherInput::near_surfaces_only). on: every vertex.
-//            off: none.
-enum class FinalGather { automatic, on, off };
+//            larger receiver, so every vertex gathers; uniform patches hold their own, and none does.
+// near: only vertices beside another surface (VertexFinalGatherInput::near_surfaces_only), any transport.
+// on: every vertex. off: none.
+enum class FinalGather { automatic, near, on, off };
 
 struct DisplayOptions {
     ColourMode mode = ColourMode::smooth;
