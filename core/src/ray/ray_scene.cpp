@@ -86,6 +86,13 @@ struct RayScene::Embree {
     std::mutex mutex;
     std::string message;
 
+    // A filter's hit i: the ray's direction against the geometric normal (negative: it meets a front).
+    static float facing(const RTCFilterFunctionNArguments* args, unsigned i) {
+        return RTCRayN_dir_x(args->ray, args->N, i) * RTCHitN_Ng_x(args->hit, args->N, i) +
+               RTCRayN_dir_y(args->ray, args->N, i) * RTCHitN_Ng_y(args->hit, args->N, i) +
+               RTCRayN_dir_z(args->ray, args->N, i) * RTCHitN_Ng_z(args->hit, args->N, i);
+    }
+
     // Closest-hit queries skip the back of a back-to-back patch: the other side of its two-sided surface
     // lies in the same plane, and the ray meets that side's front there. Occlusion queries keep every hit,
     // as a two-sided surface blocks light from both sides.
@@ -95,10 +102,7 @@ struct RayScene::Embree {
             if (args->valid[i] != -1) continue;
             const unsigned patch = RTCHitN_primID(args->hit, args->N, i);
             if (embree.see_through_back[patch] == 0) continue;
-            const float facing = RTCRayN_dir_x(args->ray, args->N, i) * RTCHitN_Ng_x(args->hit, args->N, i) +
-                                 RTCRayN_dir_y(args->ray, args->N, i) * RTCHitN_Ng_y(args->hit, args->N, i) +
-                                 RTCRayN_dir_z(args->ray, args->N, i) * RTCHitN_Ng_z(args->hit, args->N, i);
-            if (facing >= 0.0f) args->valid[i] = 0;
+            if (facing(args, i) >= 0.0f) args->valid[i] = 0;
         }
     }
 
@@ -113,10 +117,7 @@ struct RayScene::Embree {
         for (unsigned i = 0; i < args->N; ++i) {
             if (args->valid[i] != -1) continue;
             const unsigned patch = RTCHitN_primID(args->hit, args->N, i);
-            const float facing = RTCRayN_dir_x(args->ray, args->N, i) * RTCHitN_Ng_x(args->hit, args->N, i) +
-                                 RTCRayN_dir_y(args->ray, args->N, i) * RTCHitN_Ng_y(args->hit, args->N, i) +
-                                 RTCRayN_dir_z(args->ray, args->N, i) * RTCHitN_Ng_z(args->hit, args->N, i);
-            if (facing >= 0.0f || embree.surface[patch] != wanted.surface) args->valid[i] = 0;
+            if (facing(args, i) >= 0.0f || embree.surface[patch] != wanted.surface) args->valid[i] = 0;
         }
     }
 

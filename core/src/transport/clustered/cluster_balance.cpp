@@ -16,16 +16,6 @@ namespace rad {
 
 namespace {
 
-// Scaling rounds (Sinkhorn's alternation of rows and columns) and the row error that ends them early.
-// A row error of 5e-4 leaves the energy balance within about 0.05 %.
-constexpr int kBalanceRounds = 40;
-constexpr double kBalanceError = 5e-4;
-
-// wanted / has, at most kMaxLeafScale; 0 where the leaf has nothing to scale.
-double bounded_scale(double wanted, double has) {
-    return has > 0.0 ? std::min(kMaxLeafScale, wanted / has) : 0.0;
-}
-
 // Σ_k T_rk v_k for every leaf r (the unscaled gather, one channel).
 void gather_channel(const ClusterHierarchy& h, std::span<const double> v, std::vector<double>& out) {
     std::vector<glm::dvec3> values(v.size()), gathered(v.size());
@@ -176,29 +166,15 @@ void measure_reach(ClusterHierarchy& h, const RayScene& rays, double offset, dou
 double balance_leaves(ClusterHierarchy& h) {
     const std::size_t n = h.leaves.size();
     const std::vector<double> target = reach_targets(h);
-    std::vector<double> area(n), receive(n, 0.0), send(n), rows, weights(n), columns(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        area[k] = exposed_area(h, k);
-        send[k] = target[k] > 0.0 ? 1.0 : 0.0;
-    }
-    double error = 0.0;
-    for (int round = 0; round < kBalanceRounds; ++round) {
-        gather_channel(h, send, rows);
-        error = 0.0;
-        for (std::size_t k = 0; k < n; ++k) {
-            if (round > 0 && receive[k] < kMaxLeafScale)
-                error = std::max(error, std::abs(receive[k] * rows[k] - target[k]));
-            receive[k] = bounded_scale(target[k], rows[k]);
-        }
-        // The rows are scaled last: no leaf then gathers more than its target, converged or not.
-        if ((round > 0 && error < kBalanceError) || round + 1 == kBalanceRounds) break;
-        for (std::size_t k = 0; k < n; ++k) weights[k] = area[k] * receive[k];
-        spread(h, weights, columns);
-        for (std::size_t k = 0; k < n; ++k) send[k] = bounded_scale(target[k] * area[k], columns[k]);
-    }
-    h.receive_scale.assign(receive.begin(), receive.end());
-    h.send_scale.assign(send.begin(), send.end());
-    return error;
+    std::vector<double> area(n);
+    for (std::size_t k = 0; k < n; ++k) area[k] = exposed_area(h, k);
+    const LeafScales scales = balance_rows_and_columns(
+        target, area,
+        [&](std::span<const double> send, std::vector<double>& rows) { gather_channel(h, send, rows); },
+        [&](std::span<const double> weights, std::span<double> columns) { spread(h, weights, columns); });
+    h.receive_scale.assign(scales.receive.begin(), scales.receive.end());
+    h.send_scale.assign(scales.send.begin(), scales.send.end());
+    return scales.error;
 }
 
 }  // namespace rad

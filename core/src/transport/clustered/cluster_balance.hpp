@@ -5,17 +5,12 @@
 
 #include "rad/ray/ray_scene.hpp"
 #include "rad/transport/clustered/clustered_transport.hpp"
+#include "transport/leaf_balance.hpp"
 
 namespace rad {
 
 // Rays per leaf that measure its form factor to the whole scene.
 inline constexpr std::size_t kReachRays = 64;
-
-// The most a leaf's gather or its light is scaled by. A leaf that its links hardly reach (a sliver of a face
-// that its ancestors' and clusters' links, pushed down, all but miss; the underside of a model lying just
-// above a floor the probes find covered) would otherwise take a scale without bound, up to overflow: it
-// keeps this much and the rest of its imbalance.
-inline constexpr double kMaxLeafScale = 64.0;
 
 // h.reach: per leaf, the share of cosine-weighted rays that meet the front of a surface; h.exposed, the
 // share that is not covered. A surface lying on another face to face (a box's bottom on a floor) is covered

@@ -6,41 +6,18 @@
 
 #include "rad/transport/hierarchical/hierarchical_radiosity.hpp"
 #include "transport/hierarchical/hierarchical_corners.hpp"
+#include "transport/leaf_balance.hpp"
 
 namespace rad {
 
 namespace {
 
-// Scaling rounds (Sinkhorn's alternation of rows and columns) and the row error that ends them early, as
-// clustering's balance has them; a scale is at most kMaxScale (links that all but miss a leaf would ask
-// for any).
-constexpr int kBalanceRounds = 40;
-constexpr double kBalanceError = 5e-4;
-constexpr double kMaxScale = 64.0;
-
-double bounded_scale(double wanted, double has) {
-    return has > 0.0 ? std::min(kMaxScale, wanted / has) : 0.0;
-}
-
-// Per element: the leaves' values times their exposed share, the inner elements' the area-weighted mean of
-// their children's (children come after their parents in the tree).
+// Per element: the leaves' values times their exposed share, the inner elements' pulled up.
 std::vector<glm::dvec3> pull_elements(const HierarchicalSystem& system, std::span<const double> leaf_value) {
-    const std::size_t n = system.tree.size();
-    std::vector<glm::dvec3> b(n, glm::dvec3(0.0));
-    for (std::size_t e = n; e-- > 0;) {
-        const Element& element = system.tree[e];
-        if (element.is_leaf()) {
-            b[e] = glm::dvec3(leaf_value[e] * exposed(system, static_cast<std::uint32_t>(e)));
-            continue;
-        }
-        glm::dvec3 sum(0.0);
-        double area = 0.0;
-        for (std::uint32_t c = element.first_child; c < element.first_child + 4; ++c) {
-            sum += system.tree[c].shape.area * b[c];
-            area += system.tree[c].shape.area;
-        }
-        b[e] = area > 0.0 ? sum / area : glm::dvec3(0.0);
-    }
+    std::vector<glm::dvec3> b(system.tree.size(), glm::dvec3(0.0));
+    for (std::uint32_t e = 0; e < b.size(); ++e)
+        if (system.tree[e].is_leaf()) b[e] = glm::dvec3(leaf_value[e] * exposed(system, e));
+    pull_to_inner_elements(system, b);
     return b;
 }
 
@@ -206,36 +183,18 @@ double balance_leaf_form_factors(HierarchicalSystem& system, std::span<const flo
     system.send_scale.clear();
     const std::vector<double> links = gather_leaves(system, std::vector<double>(n, 1.0));
     const std::vector<double> target = leaf_reach_targets(system, reaching, links);
-    std::vector<double> area(n), receive(n, 0.0), send(n), weights(n), columns(n), rows;
-    for (std::size_t e = 0; e < n; ++e) {
-        area[e] = system.tree[e].shape.area;
-        send[e] = target[e] > 0.0 ? 1.0 : 0.0;
-    }
-    double error = 0.0;
-    for (int round = 0; round < kBalanceRounds; ++round) {
-        rows = gather_leaves(system, send);
-        error = 0.0;
-        for (std::size_t e = 0; e < n; ++e) {
-            if (!system.tree[e].is_leaf()) continue;
-            if (round > 0 && receive[e] < kMaxScale)
-                error = std::max(error, std::abs(receive[e] * rows[e] - target[e]));
-            receive[e] = bounded_scale(target[e], rows[e]);
-        }
-        // The rows are scaled last: no leaf then gathers more than its target, converged or not.
-        if ((round > 0 && error < kBalanceError) || round + 1 == kBalanceRounds) break;
-        for (std::size_t e = 0; e < n; ++e) weights[e] = area[e] * receive[e];
-        spread_leaves(system, weights, columns);
-        for (std::size_t e = 0; e < n; ++e)
-            if (system.tree[e].is_leaf()) send[e] = bounded_scale(target[e] * area[e], columns[e]);
-    }
-    system.leaf_scale.assign(n, 1.0f);
-    system.send_scale.assign(n, 1.0f);
-    for (std::size_t e = 0; e < n; ++e) {
-        if (!system.tree[e].is_leaf()) continue;
-        system.leaf_scale[e] = static_cast<float>(receive[e]);
-        system.send_scale[e] = static_cast<float>(send[e]);
-    }
-    return error;
+    std::vector<double> area(n);
+    for (std::size_t e = 0; e < n; ++e) area[e] = system.tree[e].shape.area;
+    // Inner elements have target 0, so scales 0, which neither the push nor the pull reads.
+    const LeafScales scales = balance_rows_and_columns(
+        target, area,
+        [&](std::span<const double> send, std::vector<double>& rows) { rows = gather_leaves(system, send); },
+        [&](std::span<const double> weights, std::span<double> columns) {
+            spread_leaves(system, weights, columns);
+        });
+    system.leaf_scale.assign(scales.receive.begin(), scales.receive.end());
+    system.send_scale.assign(scales.send.begin(), scales.send.end());
+    return scales.error;
 }
 
 }  // namespace rad

@@ -1,10 +1,12 @@
 #pragma once
 
-// What the push of hierarchical radiosity and its transpose share: irradiance at an element's corners, how a
-// parent's corners interpolate to its children's, and the exposed share. Private to the library.
+// What the push-pull of hierarchical radiosity and its transpose share: irradiance at an element's corners,
+// how a parent's corners interpolate to its children's, the exposed share, and the pull. Private to the
+// library.
 #include <algorithm>
 #include <array>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "rad/transport/hierarchical/hierarchical_radiosity.hpp"
 
@@ -38,6 +40,22 @@ inline double pushed_share(const HierarchicalSystem& system, std::uint32_t paren
     const double parent_exposed = exposed(system, parent);
     return parent_exposed > 0.0 ? std::min(1.0 / parent_exposed, exposed(system, child) / parent_exposed)
                                 : 0.0;
+}
+
+// Pull: every inner element's value becomes the area-weighted mean of its children's, the leaves' as they
+// are in b (children come after their parents in the tree).
+inline void pull_to_inner_elements(const HierarchicalSystem& system, std::vector<glm::dvec3>& b) {
+    for (std::size_t e = b.size(); e-- > 0;) {
+        const Element& element = system.tree[e];
+        if (element.is_leaf()) continue;
+        glm::dvec3 sum(0.0);
+        double area = 0.0;
+        for (std::uint32_t c = element.first_child; c < element.first_child + 4; ++c) {
+            sum += system.tree[c].shape.area * b[c];
+            area += system.tree[c].shape.area;
+        }
+        b[e] = area > 0.0 ? sum / area : glm::dvec3(0.0);
+    }
 }
 
 }  // namespace rad

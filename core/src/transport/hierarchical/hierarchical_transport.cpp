@@ -87,17 +87,7 @@ void element_radiosity(const HierarchicalSystem& system, std::span<const glm::dv
         const double sent = system.send_scale.empty() ? 1.0 : static_cast<double>(system.send_scale[e]);
         b[e] = leaf_radiosity[k] * (exposed(system, e) * sent);
     }
-    for (std::size_t e = b.size(); e-- > 0;) {
-        const Element& element = system.tree[e];
-        if (element.is_leaf()) continue;
-        glm::dvec3 sum(0.0);
-        double area = 0.0;
-        for (std::uint32_t c = element.first_child; c < element.first_child + 4; ++c) {
-            sum += system.tree[c].shape.area * b[c];
-            area += system.tree[c].shape.area;
-        }
-        b[e] = sum / area;
-    }
+    pull_to_inner_elements(system, b);
 }
 
 // Per unit of a leaf's exposed area, from the mean over the whole leaf.

@@ -88,14 +88,14 @@ struct HierarchicalSystem {
     // Per element, the share of its area that other geometry does not cover (a box on a floor covers part
     // of the floor); negative until measured. Light leaves only from the exposed part.
     std::vector<float> exposed_share;
-    // Per element (leaves only; 1 elsewhere), what scales the irradiance a leaf gathers so that its form
+    // Per element (read at the leaves only), what scales the irradiance a leaf gathers so that its form
     // factors sum to its form factor to the whole scene, measured by rays (1 in a closed room). Each
     // link's factor is right on average over its receiver, but interpolated to a small leaf, the links of
     // all its ancestors can add up to a few per cent more or less than the whole scene (most in corners
     // where three surfaces meet); at high albedo that error would be multiplied bounce after bounce.
     // Empty: no scaling.
     std::vector<float> leaf_scale;
-    // Per element (leaves only; 1 elsewhere), what scales the light a leaf sends into the links, set with
+    // Per element (read at the leaves only), what scales the light a leaf sends into the links, set with
     // leaf_scale by balance_leaf_form_factors so that each leaf sends what it gathers. Empty: no scaling.
     std::vector<float> send_scale;
     // Per element: the measured share of the rays from its exposed part that meet nothing (negative: not
