@@ -104,8 +104,8 @@ class SceneSweep {
         reference_image_ =
             render_reference(base, plan_.image_size, plan_.reference_spp, plan_.reference_spp * 7919);
         const double noise = block_relative_noise(reference_image_.image, reference_image_.standard_error);
-        const double pixel_noise = block_relative_noise(reference_image_.image, reference_image_.standard_error,
-                                                        ImageErrorOptions{.block_size = 1});
+        const double pixel_noise = block_relative_noise(
+            reference_image_.image, reference_image_.standard_error, ImageErrorOptions{.block_size = 1});
         results_.notes.push_back(scene_ + ": reference image " + std::to_string(plan_.image_size) + "² at " +
                                  std::to_string(plan_.reference_spp) + " paths per pixel, " +
                                  format("%.1f s", reference_image_.stats.seconds) +
@@ -236,6 +236,8 @@ class SceneSweep {
         row.total_error = relative_rms_difference(pipeline.loaded().patches, whole, reference.radiosity);
         row.reference_noise = reference.noise;
         const auto render_start = std::chrono::steady_clock::now();
+        pipeline.display();
+        row.display_seconds = seconds_since(render_start);
         const Image image =
             SceneImageRenderer(pipeline, false).render(camera_, plan_.image_size, plan_.image_size);
         row.render_seconds = seconds_since(render_start);
@@ -295,7 +297,7 @@ class SceneSweep {
             const SceneImageRenderer renderer(pipeline, false);
             const auto start = std::chrono::steady_clock::now();
             renderer.render(camera_, size, size);
-            c.radiosity_first_seconds = row.seconds() + seconds_since(start);
+            c.radiosity_first_seconds = row.seconds() + row.display_seconds + seconds_since(start);
             // The viewer's window: 8-bit sRGB, one sample per pixel (glfw_window.cpp).
             c.radiosity_further_seconds = further_view_seconds(renderer, size, 1, PixelFormat::display_srgb8);
             c.radiosity_further_float_seconds =

@@ -26,6 +26,9 @@ struct BenchRow {
     std::size_t steps = 0;
     bool converged = false;
     double mesh_seconds = 0.0, form_factor_seconds = 0.0, solve_seconds = 0.0, render_seconds = 0.0;
+    // Of render_seconds, building the display mesh (the direct light and final gather at its vertices): the
+    // first row of a solved mesh pays it, later solvers' rows reuse that display.
+    double display_seconds = 0.0;
     double seconds() const { return mesh_seconds + form_factor_seconds + solve_seconds; }
     // Area-weighted relative RMS of patch radiosity against the converged solution of the same form factors.
     double solver_error = 0.0;
@@ -44,8 +47,9 @@ struct BenchRow {
 struct PathTracerComparison {
     std::string scene;
     int image_size = 0;
-    double radiosity_image_error = 0.0;    // of the default run, against the reference at image_size
-    double radiosity_first_seconds = 0.0;  // mesh, form factors, solve and this render
+    double radiosity_image_error = 0.0;  // of the default run, against the reference at image_size
+    // Mesh, form factors, solve, the display mesh (its vertices' direct light and gather) and this render.
+    double radiosity_first_seconds = 0.0;
     // One more viewpoint: one frame, as the viewer's window draws it (8-bit sRGB, one sample per pixel), and
     // as `render` draws it (float radiance, 4 samples per pixel).
     double radiosity_further_seconds = 0.0;

@@ -239,9 +239,9 @@ CommandRunner add_render_command(CLI::App& app) {
             "--final-gather", options->pipeline.display.final_gather,
             "The last bounce gathered at each vertex by rays, for light that varies across a patch: "
             "auto (the default: every vertex of hierarchical and clustered solutions, whose leaves "
-            "take light linked to larger elements; none over uniform patches), near (only the vertices "
-            "beside another surface, 1024 rays each: corners and contact, where uniform patches blur), "
-            "on (every vertex) or off")
+            "take light linked to larger elements; near over uniform and adaptive patches), near (only "
+            "the vertices within two patch sizes of a face at least a patch across, 1024 rays each: "
+            "corners and contact, where uniform patches blur), on (every vertex) or off")
         ->transform(CLI::CheckedTransformer(gathers, CLI::ignore_case));
     add_gl_platform_option(*render, options->gl_platform);
     return [render, options]() -> int {

@@ -332,17 +332,20 @@ void RadiosityPipeline::prepare_display(Progress* progress) const {
 DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Progress* progress) const {
     DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
     if (options.mode == ColourMode::smooth && options.direct_light_at_vertices) add_direct_light(display);
-    if (options.mode == ColourMode::smooth && gathers_at_vertices(options.final_gather))
-        add_final_gather(display, options.final_gather == FinalGather::near, progress);
+    const FinalGather gather = resolved_final_gather(options.final_gather);
+    if (options.mode == ColourMode::smooth && gather != FinalGather::off)
+        add_final_gather(display, gather == FinalGather::near, progress);
     return display;
 }
 
-bool RadiosityPipeline::gathers_at_vertices(FinalGather choice) const {
-    if (choice != FinalGather::automatic) return choice != FinalGather::off;
+FinalGather RadiosityPipeline::resolved_final_gather(FinalGather choice) const {
+    if (choice != FinalGather::automatic) return choice;
     // A hierarchy's leaves take light linked to larger receivers, constant over them; uniform patches hold
-    // their own, and a gather at points would alias where the light varies faster than the vertices (a
-    // ceiling under rows of small lamps): docs/measurements.md, "Final gather".
-    return subdivision_ == Subdivision::hierarchical || subdivision_ == Subdivision::clustered;
+    // their own, right but for the light that varies within a patch beside another surface:
+    // docs/measurements.md, "Near surfaces over uniform patches".
+    const bool hierarchy =
+        subdivision_ == Subdivision::hierarchical || subdivision_ == Subdivision::clustered;
+    return hierarchy ? FinalGather::on : FinalGather::near;
 }
 
 void RadiosityPipeline::add_final_gather(DisplayMesh& display, bool near_surfaces_only,

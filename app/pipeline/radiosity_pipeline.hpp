@@ -141,9 +141,9 @@ class RadiosityPipeline {
     // Adds the final gather (add_vertex_final_gather) to a display mesh of patches(), after its direct
     // light; nothing before prepare or a saved solution.
     void add_final_gather(DisplayMesh& display, bool near_surfaces_only, Progress* progress) const;
-    // Whether build_display adds the final gather for this choice: automatic gathers over hierarchical and
-    // clustered transports.
-    bool gathers_at_vertices(FinalGather choice) const;
+    // The final gather build_display adds for this choice (on, near or off): automatic is on over
+    // hierarchical and clustered transports, near over uniform and adaptive patches.
+    FinalGather resolved_final_gather(FinalGather choice) const;
     // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
     std::vector<glm::dvec3> element_direct() const;
     void continue_saved();

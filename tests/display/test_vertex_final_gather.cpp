@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "form_factor_test_scenes.hpp"
 #include "rad/display/display_mesh.hpp"
 #include "rad/display/vertex_final_gather.hpp"
 #include "rad/geometry/point_polygon_factor.hpp"
@@ -121,6 +122,51 @@ TEST(FinalGather, NearSurfacesOnlyTheFloorBesideTheWallGathers) {
     EXPECT_GT(far, 50);
     EXPECT_GT(near, 5);
     EXPECT_TRUE(finer);
+}
+
+TEST(FinalGather, NearSurfacesOnlyFacesSmallerThanAPatchMakeNoVertexGather) {
+    // A 1 × 1 floor and a wall at x = 0 at patch size 0.1, and 5 × 5 squares 0.04 on a side hovering 0.03
+    // over the floor's far part (x from 0.5 to 0.94), alternately facing down (the floor meets their fronts)
+    // and up (their backs). A floor vertex under them meets a face well within two patch sizes, but one
+    // smaller than its patch: light that varies on their spacing is more than samples at the vertices can
+    // show (they would alias into bands), so it keeps its patches; beside the wall, a face larger than a
+    // patch, a vertex gathers.
+    test::TestSceneBuilder builder;
+    builder.add("floor", {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}});
+    builder.add("wall", {{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}});
+    const double side = 0.04, y = 0.03;
+    for (int i = 0; i < 5; ++i) {
+        for (int k = 0; k < 5; ++k) {
+            const double x = 0.5 + 0.1 * i, z = 0.1 + 0.2 * k;
+            const std::string name = "square " + std::to_string(i) + "," + std::to_string(k);
+            if ((i + k) % 2 == 0) {
+                builder.add(name, {{x, y, z}, {x + side, y, z}, {x + side, y, z + side}, {x, y, z + side}});
+            } else {
+                builder.add(name, {{x, y, z}, {x, y, z + side}, {x + side, y, z + side}, {x + side, y, z}});
+            }
+        }
+    }
+    auto solved = test::solve_scene(builder.build(), Subdivision::uniform, 0.1);
+    const PatchMesh& patches = *solved->system.patches;
+    const std::vector<glm::dvec3> zero(patches.size(), glm::dvec3(0.0));
+    const Gathered g = gather(std::move(solved), zero, zero, kFinalGatherRayBudget, true);
+    ASSERT_FALSE(g.display.gather.empty());
+    const DisplayMesh::FinalGather& rows = g.display.gather;
+    int under = 0, beside_wall = 0;
+    for (std::size_t v = 0; v < g.display.vertex_count(); ++v) {
+        if (vertex_surface(g.display, *g.solved->system.patches, v) != 0) continue;
+        const glm::vec3 x = g.display.positions[v];
+        const bool gathers = rows.row_begin[v] < rows.row_begin[v + 1];
+        if (x.x < 0.05f) {
+            EXPECT_TRUE(gathers) << "vertex at x = " << x.x << ", z = " << x.z;
+            ++beside_wall;
+        } else if (x.x > 0.45f) {
+            EXPECT_FALSE(gathers) << "vertex at x = " << x.x << ", z = " << x.z;
+            ++under;
+        }
+    }
+    EXPECT_GT(under, 40);
+    EXPECT_GT(beside_wall, 5);
 }
 
 TEST(FinalGather, AClusteredFurnaceShowsItsExactRadiosityAtEveryVertex) {

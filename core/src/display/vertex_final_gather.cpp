@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "display/vertex_origin.hpp"
@@ -54,19 +55,34 @@ double vertex_patch_size(const DisplayMesh& display, const PatchMesh& patches, s
     return std::sqrt(area);
 }
 
-// Whether a probe ray from origin meets a surface within kNearPatchSizes of vertex v's patch size.
-bool near_a_surface(const DisplayMesh& display, const VertexFinalGatherInput& input, const glm::dvec3& origin,
-                    const Frame& frame, std::size_t v, RandomStream& random, Scratch& s) {
+// Per patch, the size of the input face it is part of: the square root of the face's area.
+std::vector<double> face_sizes(const PatchMesh& patches) {
+    std::unordered_map<std::uint64_t, double> area;
+    const auto key = [](const Patch& p) { return (std::uint64_t{p.surface} << 32) | p.face; };
+    for (const Patch& p : patches.patches) area[key(p)] += p.area;
+    std::vector<double> size(patches.size());
+    for (std::size_t q = 0; q < patches.size(); ++q) size[q] = std::sqrt(area[key(patches.patches[q])]);
+    return size;
+}
+
+// Whether a probe ray from origin meets a face (either side) at least kNearFacePatchSizes of vertex v's
+// patch size across, within kNearPatchSizes of it.
+bool near_a_surface(const DisplayMesh& display, const VertexFinalGatherInput& input,
+                    std::span<const double> face_size, const glm::dvec3& origin, const Frame& frame,
+                    std::size_t v, RandomStream& random, Scratch& s) {
     trace_rays(input, origin, frame, kNearProbeRays, random, s);
-    const double near = kNearPatchSizes * vertex_patch_size(display, *input.patches, v);
-    for (const RayHit& hit : s.hits)
-        if (hit.patch != RayHit::kMissed && static_cast<double>(hit.t) < near) return true;
+    const double size = vertex_patch_size(display, *input.patches, v);
+    for (const RayHit& hit : s.hits) {
+        if (hit.met == RayHit::kMissed || static_cast<double>(hit.t) >= kNearPatchSizes * size) continue;
+        if (face_size[hit.met] >= kNearFacePatchSizes * size) return true;
+    }
     return false;
 }
 
 // Vertex v's row: the patches its rays meet from the front, each with its share of the rays.
-void gather_row(const DisplayMesh& display, const VertexFinalGatherInput& input, double offset, int count,
-                std::size_t v, Scratch& s, Row& row) {
+void gather_row(const DisplayMesh& display, const VertexFinalGatherInput& input,
+                std::span<const double> face_size, double offset, int count, std::size_t v, Scratch& s,
+                Row& row) {
     const glm::dvec3 normal(display.normals[v]);
     const double length = glm::length(normal);
     if (!(length > 0.0)) return;  // no side to gather on: the vertex keeps its patches' reconstruction
@@ -74,7 +90,8 @@ void gather_row(const DisplayMesh& display, const VertexFinalGatherInput& input,
     const glm::dvec3 origin = vertex_origin(display, *input.patches, v) + offset * n;
     const Frame frame = frame_around(n);
     RandomStream random(input.seed ^ kGatherKey, v);
-    if (input.near_surfaces_only && !near_a_surface(display, input, origin, frame, v, random, s)) return;
+    if (input.near_surfaces_only && !near_a_surface(display, input, face_size, origin, frame, v, random, s))
+        return;
     trace_rays(input, origin, frame, count, random, s);
     std::vector<std::uint32_t>& met = s.met;
     met.clear();
@@ -123,6 +140,8 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
     const int count = static_cast<int>(std::min<std::size_t>(most, input.ray_budget / vertices));
     if (count < (input.near_surfaces_only ? kNearGatherMinRays : kFinalGatherMinRays)) return;
     const double offset = ray_offset(patches);
+    const std::vector<double> face_size =
+        input.near_surfaces_only ? face_sizes(patches) : std::vector<double>{};
     Progress* progress = input.progress;
     if (progress) {
         progress->begin("final gather at the vertices", vertices);
@@ -138,7 +157,7 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
                               const std::uint32_t first = display.weight_begin[v];
                               if (first == display.weight_begin[v + 1]) continue;
                               if (display.textured_patch(display.weight_patch[first])) continue;
-                              gather_row(display, input, offset, count, v, scratch, rows[v]);
+                              gather_row(display, input, face_size, offset, count, v, scratch, rows[v]);
                           }
                           if (progress) progress->advance(range.size());
                       });

@@ -247,10 +247,12 @@ void RayScene::intersect(std::span<const Ray> rays, std::span<RayHit> hits) cons
             out.t = h.ray.tfar;
             if (h.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
                 out.patch = RayHit::kMissed;
+                out.met = RayHit::kMissed;
                 continue;
             }
             if (!reaches_front(h)) embree_->fronts_at_the_same_distance(stream[k]);
             out.t = h.ray.tfar;
+            out.met = h.hit.primID;
             out.patch = reaches_front(h) ? h.hit.primID : RayHit::kBackFace;
         }
     }

@@ -37,7 +37,8 @@ enum class ColourMode { smooth, flat };
 enum class Reconstruction { average, linear };
 
 // automatic: the builder decides by the transport: a hierarchy's leaves hold the light of links made for a
-//            larger receiver, so every vertex gathers; uniform patches hold their own, and none does.
+//            larger receiver, so every vertex gathers; uniform patches hold their own, and only vertices
+//            beside another surface gather (near).
 // near: only vertices beside another surface (VertexFinalGatherInput::near_surfaces_only), any transport.
 // on: every vertex. off: none.
 enum class FinalGather { automatic, near, on, off };

@@ -20,11 +20,12 @@ inline constexpr int kFinalGatherMinRays = 128;
 inline constexpr std::size_t kFinalGatherRayBudget = 32'000'000;
 // A gather near surfaces only (near_surfaces_only): the rays of a vertex that gathers, and the fewest worth
 // tracing (fewer are noisier than the patches' means they replace); the probe rays that look for a surface
-// within kNearPatchSizes of the vertex's patch size.
+// within kNearPatchSizes of the vertex's patch size, on a face at least kNearFacePatchSizes of it across.
 inline constexpr int kNearGatherRays = 1024;
 inline constexpr int kNearGatherMinRays = 512;
 inline constexpr int kNearProbeRays = 64;
 inline constexpr double kNearPatchSizes = 2.0;
+inline constexpr double kNearFacePatchSizes = 1.0;
 
 struct VertexFinalGatherInput {
     const PatchMesh* patches = nullptr;  // the patches the display mesh was built from
@@ -40,7 +41,11 @@ struct VertexFinalGatherInput {
     // Where patches hold their own light (uniform patches), their means are right and their reconstruction
     // is smooth; only beside another surface (a corner, a block's foot) does the light vary across a patch
     // faster than it shows. Then only vertices whose probe rays meet a surface within kNearPatchSizes of
-    // their largest patch's size gather, with kNearGatherRays rays; the others keep the reconstruction.
+    // their largest patch's size gather, with kNearGatherRays rays; the others keep the reconstruction. The
+    // surface met must be on an input face at least kNearFacePatchSizes of that size across (√area): the
+    // light beside faces smaller than the vertices' spacing (a row of small lamps) varies faster than
+    // samples at the vertices can show, and point samples there alias into bands the patches' means do not
+    // have.
     bool near_surfaces_only = false;
     Progress* progress = nullptr;  // advanced per vertex; its cancel throws Cancelled
 };

@@ -25,6 +25,7 @@ struct RayHit {
     static constexpr std::uint32_t kBackFace = 0xfffffffeu;  // reached a back face first: blocked
     std::uint32_t patch = kMissed;
     float t = 0.0f;
+    std::uint32_t met = kMissed;  // the patch met, from its front or its back; kMissed when none
 };
 
 // The patches as an Embree BVH, for batched ray queries from any number of threads at once. This class is
@@ -45,9 +46,9 @@ class RayScene {
     // blocked[k] = 1 when anything, front or back, lies on rays[k] between tnear and tfar; else 0.
     void occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
 
-    // hits[k] = the first surface rays[k] meets: a patch seen from its front, kBackFace or kMissed. The back
-    // of a back-to-back patch (PatchMesh::is_back_to_back) is passed through: the other side's front is
-    // there.
+    // hits[k] = the first surface rays[k] meets: a patch seen from its front, kBackFace or kMissed (and in
+    // `met` the patch, whichever side). The back of a back-to-back patch (PatchMesh::is_back_to_back) is
+    // passed through: the other side's front is there.
     void intersect(std::span<const Ray> rays, std::span<RayHit> hits) const;
 
   private:
