@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -37,6 +38,9 @@ TEST(RayScene, RaysReachFrontFacesAndAreBlockedByBackFaces) {
     EXPECT_NEAR(hits[2].t, 1.0f, 1e-6f);
     EXPECT_EQ(hits[3].patch, RayHit::kBackFace);
     EXPECT_EQ(hits[4].patch, RayHit::kMissed);
+    // `met` names the patch met, whichever side.
+    const std::uint32_t met[] = {1u, 0u, 1u, 0u, RayHit::kMissed};
+    for (std::size_t k = 0; k < rays.size(); ++k) EXPECT_EQ(hits[k].met, met[k]) << "ray " << k;
 }
 
 TEST(RayScene, OcclusionCountsBothSidesAndRespectsTheSegment) {
