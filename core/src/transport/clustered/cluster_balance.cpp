@@ -10,6 +10,7 @@
 #include "sampling/sampling.hpp"
 #include "transport/clustered/cluster_flow.hpp"
 #include "transport/clustered/cluster_geometry.hpp"
+#include "transport/pooled_reach.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad {
@@ -32,53 +33,56 @@ constexpr int kLeafCoverageProbes = 32;
 // Leaves pooled until their rays measure the links' bias to a few per cent.
 constexpr std::size_t kPoolLeaves = 16;
 
-// Per leaf, the ratio of measured reach to the links' row sum over a pool of leaves around it: its base
-// patch when that has kPoolLeaves leaves, else the smallest cluster above it that has. The links' error
-// varies slowly over the scene; one leaf's 64 rays are too noisy to correct it alone.
+// Per base patch, its leaves (indices into h.leaves).
+std::vector<std::vector<std::uint32_t>> leaves_by_base_patch(const ClusterHierarchy& h) {
+    std::vector<std::vector<std::uint32_t>> leaves(h.tree.base_size());
+    for (std::size_t k = 0; k < h.leaves.size(); ++k)
+        leaves[h.tree[h.leaves[k]].base_patch].push_back(static_cast<std::uint32_t>(k));
+    return leaves;
+}
+
+// Per leaf, the ratio of measured reach to the links' row sum over a pool of leaves around it
+// (pooled_ratio): its base patch when that has kPoolLeaves leaves, else the smallest cluster above it that
+// has. The links' error varies slowly over the scene; one leaf's 64 rays are too noisy to correct it alone.
 std::vector<double> pooled_bias(const ClusterHierarchy& h, std::span<const double> links) {
-    struct Pool {
-        double measured = 0.0, linked = 0.0;
-        std::size_t leaves = 0;
-        void add(const Pool& o) {
-            measured += o.measured;
-            linked += o.linked;
-            leaves += o.leaves;
-        }
-        double ratio() const { return linked > 0.0 ? measured / linked : 1.0; }
-    };
-    std::vector<Pool> patch(h.tree.base_size()), cluster(h.clusters.size());
-    for (std::size_t k = 0; k < h.leaves.size(); ++k) {
-        const Element& e = h.tree[h.leaves[k]];
-        Pool& pool = patch[e.base_patch];
-        pool.measured += e.shape.area * h.reach[k];
-        pool.linked += e.shape.area * links[k];
-        ++pool.leaves;
-    }
+    const std::vector<std::vector<std::uint32_t>> leaves_of = leaves_by_base_patch(h);
+    std::vector<std::size_t> leaf_count(h.clusters.size(), 0);
     std::vector<std::uint32_t> parent(h.clusters.size(), 0), patch_cluster(h.tree.base_size(), 0);
     for (std::size_t c = h.clusters.size(); c-- > 0;) {
         const ClusterHierarchy::Cluster& node = h.clusters[c];
-        for (std::uint32_t k = 0; k < node.child_count; ++k) {
-            cluster[c].add(cluster[node.first_child + k]);
+        for (std::uint32_t k = 0; k < node.child_count; ++k)
             parent[node.first_child + k] = static_cast<std::uint32_t>(c);
-        }
-        if (node.child_count > 0) continue;
         for (std::uint32_t k = node.patch_begin; k < node.patch_end; ++k) {
-            cluster[c].add(patch[h.patch_order[k]]);
-            patch_cluster[h.patch_order[k]] = static_cast<std::uint32_t>(c);
+            leaf_count[c] += leaves_of[h.patch_order[k]].size();
+            if (node.child_count == 0) patch_cluster[h.patch_order[k]] = static_cast<std::uint32_t>(c);
         }
     }
-    std::vector<double> patch_ratio(patch.size());
-    for (std::size_t p = 0; p < patch.size(); ++p) {
-        if (patch[p].leaves >= kPoolLeaves) {
-            patch_ratio[p] = patch[p].ratio();
-            continue;
+    std::vector<PoolLeaf> pool;
+    const auto add_patch = [&](std::uint32_t p) {
+        for (const std::uint32_t k : leaves_of[p])
+            pool.push_back({h.tree[h.leaves[k]].shape.area, links[k], static_cast<double>(h.reach[k])});
+    };
+    std::vector<double> cluster_ratio(h.clusters.size(), -1.0);  // -1: not yet computed
+    std::vector<double> bias(h.leaves.size(), 1.0);
+    for (std::uint32_t p = 0; p < h.tree.base_size(); ++p) {
+        double ratio = 0.0;
+        if (leaves_of[p].size() >= kPoolLeaves) {
+            pool.clear();
+            add_patch(p);
+            ratio = pooled_ratio(pool);
+        } else {
+            std::uint32_t c = patch_cluster[p];
+            while (c != 0 && leaf_count[c] < kPoolLeaves) c = parent[c];
+            if (cluster_ratio[c] < 0.0) {
+                pool.clear();
+                for (std::uint32_t k = h.clusters[c].patch_begin; k < h.clusters[c].patch_end; ++k)
+                    add_patch(h.patch_order[k]);
+                cluster_ratio[c] = pooled_ratio(pool);
+            }
+            ratio = cluster_ratio[c];
         }
-        std::uint32_t c = patch_cluster[p];
-        while (c != 0 && cluster[c].leaves < kPoolLeaves) c = parent[c];
-        patch_ratio[p] = cluster[c].ratio();
+        for (const std::uint32_t k : leaves_of[p]) bias[k] = ratio;
     }
-    std::vector<double> bias(h.leaves.size());
-    for (std::size_t k = 0; k < h.leaves.size(); ++k) bias[k] = patch_ratio[h.tree[h.leaves[k]].base_patch];
     return bias;
 }
 
