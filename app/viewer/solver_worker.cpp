@@ -515,6 +515,7 @@ void SolverWorker::take_step() {
     const std::vector<glm::dvec3> before = pipeline_->solver().display_solution();
     const StepReport report = pipeline_->step();
     const std::vector<glm::dvec3> after = pipeline_->solver().display_solution();
+    previous_solution_ = before;
     add_bounce(positive_difference(after, before),
                direct_light_share(display_, after) - direct_light_share(display_, before));
     history_residual_.push_back(log10_or_floor(report.residual));
@@ -551,6 +552,7 @@ void SolverWorker::start_history_from_solver() {
 }
 
 void SolverWorker::start_bounce_history() {
+    previous_solution_.clear();
     bounce_history_.clear();
     vertex_bounces_.clear();
     bounce_direct_share_.clear();
@@ -597,7 +599,11 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
     std::shared_ptr<ViewerRadiance> radiance;
     if (with_radiance) {
         radiance = std::make_shared<ViewerRadiance>();
-        radiance->cumulative = vertex_radiance(display_, shown_radiosity(), shown_direct_share());
+        const std::vector<glm::dvec3> shown = shown_radiosity();
+        const bool stepped =
+            solver_ready_ && !pipeline_->saved() && previous_solution_.size() == shown.size();
+        radiance->cumulative = stepped ? stepped_vertex_radiance(display_, shown, previous_solution_)
+                                       : vertex_radiance(display_, shown, shown_direct_share());
         if (const SavedSolution* saved = pipeline_->saved()) {
             // Before the transport is rebuilt: the saved state, with no bounce history.
             radiance->step = saved->report.steps;

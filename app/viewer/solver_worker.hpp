@@ -158,6 +158,9 @@ class SolverWorker {
     std::deque<ViewerRadiance::Colours> vertex_bounces_;
     std::deque<double> bounce_direct_share_;
     std::size_t first_bounce_ = 0;
+    // The solver's radiosity one step before the one shown (empty at the start of a history), which the
+    // vertices with a gather row take (stepped_vertex_radiance), so they show the bounces of the step too.
+    std::vector<glm::dvec3> previous_solution_;
     std::vector<float> history_residual_;
     std::vector<float> history_unshot_;
     std::string scene_name_;

@@ -26,8 +26,9 @@ PipelineOptions cornell(double patch_size) {
     // The area-weighted average is linear in B, so the radiance of one bounce alone is the difference of
     // two cumulative ones; linear reconstruction clamps negative extrapolations to 0, which is not.
     options.display.reconstruction = Reconstruction::average;
-    // The gathered view is one bounce ahead of the step it draws, and the bounce views show the patches;
-    // these tests compare one with the other, bounce by bounce.
+    // A gathered vertex shows the previous step's light reflected once (stepped_vertex_radiance), a
+    // pipeline's own view the latest step's, and the bounce views show the patches; these tests compare one
+    // with the other, bounce by bounce (the gather's own test is AGatheredVertexShowsTheBouncesOfItsStep).
     options.display.final_gather = FinalGather::off;
     return options;
 }
@@ -84,6 +85,41 @@ TEST(ViewerWorker, TakesTheStepsAskedForAndKeepsEachBounceAlone) {
         before = after;
     }
     EXPECT_FALSE(snapshot.radiance->bounce(4));
+}
+
+// A gathered vertex reflects once what it gathers: over Jacobi step k's radiosity it would show k + 1
+// bounces beside vertices that show k (a bright halo by the walls and blocks while the light builds up).
+// The viewer gathers the step before: at step 3 a vertex with a row shows what a pipeline's view shows after
+// 2 steps (its emission, its direct light and ρ Σ share (B_2 − E): three bounces), and a vertex without one
+// the patches' reconstruction after 3.
+TEST(ViewerWorker, AGatheredVertexShowsTheBouncesOfItsStep) {
+    PipelineOptions options = cornell(100.0);
+    options.display.final_gather = FinalGather::on;
+    SolverWorker worker(options);
+    worker.request_steps(3);
+    ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
+    const SolverSnapshot snapshot = worker.snapshot();
+    ASSERT_TRUE(snapshot.error.empty()) << snapshot.error;
+    ASSERT_TRUE(snapshot.radiance);
+    EXPECT_EQ(snapshot.radiance->step, 3u);
+    RadiosityPipeline pipeline(options);
+    pipeline.prepare();
+    const DisplayMesh::FinalGather& rows = pipeline.display().gather;
+    ASSERT_FALSE(rows.empty());
+    const std::vector<glm::vec3> two = radiance_after(options, 2), three = radiance_after(options, 3);
+    const std::vector<glm::vec3>& shown = snapshot.radiance->cumulative;
+    ASSERT_EQ(shown.size(), two.size());
+    std::size_t gathered = 0, differ = 0;
+    for (std::size_t v = 0; v < shown.size(); ++v) {
+        const bool row = rows.row_begin[v] < rows.row_begin[v + 1];
+        const glm::vec3 expected = row ? two[v] : three[v];
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(shown[v][c], expected[c], 1e-5f * (1.0f + std::abs(expected[c]))) << "vertex " << v;
+        gathered += row ? 1 : 0;
+        differ += row && std::abs(two[v].y - three[v].y) > 1e-3f * three[v].y ? 1 : 0;
+    }
+    EXPECT_GT(gathered, shown.size() / 2);
+    EXPECT_GT(differ, gathered / 2);  // the two views differ: the test can tell them apart
 }
 
 // Hierarchical radiosity (the panel's subdivision choice): the geometry the render thread gets is the

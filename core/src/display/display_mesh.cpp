@@ -271,17 +271,17 @@ glm::dvec3 gathered(const DisplayMesh::FinalGather& gather, std::span<const glm:
     return gather.reflectance[v] * sum;
 }
 
-}  // namespace
-
-void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                     std::span<glm::vec3> radiance, std::optional<double> direct_share, bool final_gather) {
+// vertex_radiance, with the vertices' gathered rows over `gathered_from`.
+void shown_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
+                    std::span<const glm::dvec3> gathered_from, std::span<glm::vec3> radiance,
+                    std::optional<double> direct_share, bool final_gather) {
     if (radiance.size() != display.vertex_count()) {
         throw std::invalid_argument("vertex_radiance: the output does not have one entry per vertex");
     }
-    if (radiosity.size() != display.patch_count) {
+    if (radiosity.size() != display.patch_count || gathered_from.size() != display.patch_count) {
         throw std::invalid_argument("vertex_radiance: the radiosity does not have one entry per patch");
     }
-    const std::span<const glm::dvec3> solution = radiosity;
+    const std::span<const glm::dvec3> solution = gathered_from;
     // Where the vertices have direct light of their own, the patches give the rest.
     const bool has_direct = !display.direct.vertex.empty();
     const double share =
@@ -317,6 +317,21 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
         if (share > 0.0) sum += share * glm::dvec3(display.direct.vertex[v]);
         radiance[v] = glm::vec3(glm::max(sum, 0.0) / std::numbers::pi);
     }
+}
+
+}  // namespace
+
+void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
+                     std::span<glm::vec3> radiance, std::optional<double> direct_share, bool final_gather) {
+    shown_radiance(display, radiosity, radiosity, radiance, direct_share, final_gather);
+}
+
+std::vector<glm::vec3> stepped_vertex_radiance(const DisplayMesh& display,
+                                               std::span<const glm::dvec3> radiosity,
+                                               std::span<const glm::dvec3> previous) {
+    std::vector<glm::vec3> radiance(display.vertex_count());
+    shown_radiance(display, radiosity, previous, radiance, std::nullopt, true);
+    return radiance;
 }
 
 std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,

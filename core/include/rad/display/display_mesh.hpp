@@ -158,6 +158,15 @@ void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> rad
 std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
                                        std::optional<double> direct_share = {}, bool final_gather = true);
 
+// vertex_radiance of a solution being stepped bounce by bounce: the vertices with a gather row gather
+// `previous` (the radiosity one Jacobi step earlier) instead. A gather reflects what it gathers once more, so
+// over the latest step those vertices would show one bounce more than their neighbours that keep the
+// patches' reconstruction (a halo beside the walls while the light builds up); over the step before, every
+// vertex shows the bounces of its step. Converged, previous and radiosity are the same.
+std::vector<glm::vec3> stepped_vertex_radiance(const DisplayMesh& display,
+                                               std::span<const glm::dvec3> radiosity,
+                                               std::span<const glm::dvec3> previous);
+
 // The radiance each vertex itself shows, from what vertex_radiance gave: a textured vertex's value times the
 // albedo at its texture coordinates, plus the surface's emitted radiance; other vertices as they are. What
 // one colour per vertex can hold (a PLY export), without the texels between vertices.
