@@ -5,8 +5,8 @@
 
 #include "pipeline/form_factor_options.hpp"
 #include "pipeline/outside_light_options.hpp"
+#include "pipeline/solution_display.hpp"
 #include "rad/display/vertex_direct_light.hpp"
-#include "rad/display/vertex_final_gather.hpp"
 #include "rad/mesh/patch_albedo.hpp"
 #include "rad/ray/ray_scene.hpp"
 #include "rad/transport/source_update.hpp"
@@ -169,9 +169,9 @@ TransportSettings RadiosityPipeline::transport_settings() const {
     settings.hierarchical.max_memory_bytes = settings.form_factors.max_memory_bytes;
     settings.hierarchical.patch_size = settings.form_factors.patch_size;
     settings.hierarchical.count_patches_at = settings.form_factors.count_patches_at;
-    settings.clustered.max_memory_bytes = settings.form_factors.max_memory_bytes;
     settings.clustered =
         clustered_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
+    settings.clustered.max_memory_bytes = settings.form_factors.max_memory_bytes;
     // An automatic choice solves the passes by bounces; the final solver is chosen once the transport is
     // known.
     settings.pass_method = method_;
@@ -305,17 +305,6 @@ const DisplayMesh& RadiosityPipeline::display() const {
     return *display_;
 }
 
-namespace {
-
-std::vector<glm::dvec3> emitted_radiosity(const Scene& scene, const PatchMesh& patches) {
-    std::vector<glm::dvec3> emitted(patches.size());
-    for (std::size_t q = 0; q < patches.size(); ++q)
-        emitted[q] = scene.surfaces[patches.patches[q].surface].material.emitted_radiosity();
-    return emitted;
-}
-
-}  // namespace
-
 std::vector<glm::dvec3> RadiosityPipeline::element_direct() const {
     const Transport& t = *built_.transport;
     const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, patches());
@@ -330,84 +319,57 @@ void RadiosityPipeline::prepare_display(Progress* progress) const {
 }
 
 DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Progress* progress) const {
-    DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
-    if (options.mode == ColourMode::smooth && options.direct_light_at_vertices) add_direct_light(display);
-    const FinalGather gather = resolved_final_gather(options.final_gather);
-    if (options.mode == ColourMode::smooth && gather != FinalGather::off)
-        add_final_gather(display, gather == FinalGather::near, progress);
-    return display;
+    if (!built_.transport && !saved_) {
+        DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
+        if (options.mode == ColourMode::smooth && options.direct_light_at_vertices)
+            add_preview_direct_light(display);
+        return display;
+    }
+    std::vector<glm::dvec3> direct;
+    SolvedPatches solved{.mesh = &patches()};
+    if (built_.transport) {
+        const Transport& t = *built_.transport;
+        direct = element_direct();
+        solved.area = t.area;
+        solved.reflectance = t.reflectance;
+        solved.emission = t.emission;
+        solved.direct = direct;
+    } else {
+        solved.area = saved_->area;
+        solved.reflectance = saved_->reflectance;
+        solved.emission = saved_->emission;
+        solved.direct = saved_->direct;
+    }
+    const SolutionDisplaySettings settings{
+        .options = options, .display_patch_size = display_patch_size(), .seed = options_.form_factors.seed};
+    return build_solution_display(loaded_.scene, solved, settings, progress);
 }
 
-FinalGather RadiosityPipeline::resolved_final_gather(FinalGather choice) const {
-    if (choice != FinalGather::automatic) return choice;
-    // A hierarchy's leaves take light linked to larger receivers, constant over them; uniform patches hold
-    // their own, right but for the light that varies within a patch beside another surface:
-    // docs/measurements.md, "Near surfaces over uniform patches".
+double RadiosityPipeline::display_patch_size() const {
+    // A hierarchy's leaves are drawn on patches of the uniform size its base patches were scaled from.
     const bool hierarchy =
         subdivision_ == Subdivision::hierarchical || subdivision_ == Subdivision::clustered;
-    return hierarchy ? FinalGather::on : FinalGather::near;
+    return hierarchy ? loaded_.patch_size / base_patch_scale(subdivision_) : 0.0;
 }
 
-void RadiosityPipeline::add_final_gather(DisplayMesh& display, bool near_surfaces_only,
-                                         Progress* progress) const {
-    std::span<const glm::dvec3> emission, reflectance;
-    if (built_.transport) {
-        emission = built_.transport->emission;
-        reflectance = built_.transport->reflectance;
-    } else if (saved_) {
-        emission = saved_->emission;
-        reflectance = saved_->reflectance;
-    } else {
-        return;  // a preview: no solution to gather from yet
-    }
-    const PatchMesh& mesh = patches();
-    // What the vertices' own direct light holds is not gathered again.
-    std::vector<glm::dvec3> source(mesh.size(), glm::dvec3(0.0));
-    if (!display.direct.vertex.empty()) source = emitted_radiosity(loaded_.scene, mesh);
-    const RayScene rays(mesh);
-    add_vertex_final_gather(display, {.patches = &mesh,
-                                      .rays = &rays,
-                                      .emission = emission,
-                                      .reflectance = reflectance,
-                                      .source = source,
-                                      .seed = options_.form_factors.seed,
-                                      .near_surfaces_only = near_surfaces_only,
-                                      .progress = progress});
-}
-
-void RadiosityPipeline::add_direct_light(DisplayMesh& display) const {
+void RadiosityPipeline::add_preview_direct_light(DisplayMesh& display) const {
     const PatchMesh& mesh = patches();
     const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, mesh);
     if (!draws_vertex_direct_light(mesh, emitted)) return;
     const RayScene rays(mesh);
-    VertexDirectLightInput input{
-        .patches = &mesh, .rays = &rays, .emitted = emitted, .seed = options_.form_factors.seed};
-    std::vector<glm::dvec3> direct;
-    std::vector<double> area;
-    if (built_.transport) {
-        const Transport& t = *built_.transport;
-        direct = element_direct();
-        input.emission = t.emission;
-        input.reflectance = t.reflectance;
-        input.area = t.area;
-        input.patch_direct = direct;
-    } else if (saved_) {
-        input.emission = saved_->emission;
-        input.reflectance = saved_->reflectance;
-        input.area = saved_->area;
-        input.patch_direct = saved_->direct;
-    } else {
-        // Before the transport (a preview while it is built): no patch holds any of the light yet.
-        direct.assign(mesh.size(), glm::dvec3(0.0));
-        area.resize(mesh.size());
-        for (std::size_t q = 0; q < mesh.size(); ++q) area[q] = mesh.patches[q].area;
-        input.emission = emitted;
-        input.reflectance = display_texturing().reflectance;
-        input.area = area;
-        input.patch_direct = direct;
-        input.keep_patch_means = false;
-    }
-    add_vertex_direct_light(display, input);
+    // No patch holds any of the light yet: each vertex keeps its own value.
+    const std::vector<glm::dvec3> direct(mesh.size(), glm::dvec3(0.0));
+    std::vector<double> area(mesh.size());
+    for (std::size_t q = 0; q < mesh.size(); ++q) area[q] = mesh.patches[q].area;
+    add_vertex_direct_light(display, {.patches = &mesh,
+                                      .rays = &rays,
+                                      .emitted = emitted,
+                                      .emission = emitted,
+                                      .reflectance = display_texturing().reflectance,
+                                      .area = area,
+                                      .patch_direct = direct,
+                                      .seed = options_.form_factors.seed,
+                                      .keep_patch_means = false});
 }
 
 std::vector<glm::dvec3> RadiosityPipeline::preview_radiosity() const {

@@ -100,16 +100,17 @@ class RadiosityPipeline {
     Subdivision subdivision() const { return subdivision_; }
     // Built on first use, so `solve` never pays for it.
     const DisplayMesh& display() const;
-    // A display mesh of patches() with these options; in smooth mode with the emitters' direct light at its
-    // vertices (DisplayOptions::direct_light_at_vertices), as add_direct_light adds it.
+    // A display of the solution with these options (build_solution_display): a hierarchy's leaves drawn on
+    // patches of the uniform size (display_patch_size) in smooth mode. Before prepare (a preview while the
+    // transport is built), a display of patches() with the emitters' direct light at its vertices
+    // (add_preview_direct_light).
     DisplayMesh build_display(const DisplayOptions& options, Progress* progress = nullptr) const;
     // Builds display() now, reporting the final gather's progress (a render's stage that can take seconds).
     void prepare_display(Progress* progress) const;
-    // Adds the emitters' direct light to the vertices of a display mesh of patches(). With a transport or a
-    // saved solution, each patch's drawn mean is kept to the direct light its radiosity holds. Before
-    // prepare (a preview while the transport is built) no patch holds any of it yet: each vertex keeps its
-    // own value, to be shown with direct_share 1 over preview_radiosity().
-    void add_direct_light(DisplayMesh& display) const;
+    // Adds the emitters' direct light to the vertices of a display mesh of patches() before prepare: no
+    // patch holds any of it yet, so each vertex keeps its own value, to be shown with direct_share 1 over
+    // preview_radiosity().
+    void add_preview_direct_light(DisplayMesh& display) const;
     // E per patch of patches(): the radiosity before any light is reflected.
     std::vector<glm::dvec3> preview_radiosity() const;
     // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the
@@ -138,12 +139,9 @@ class RadiosityPipeline {
 
   private:
     TransportSettings transport_settings() const;
-    // Adds the final gather (add_vertex_final_gather) to a display mesh of patches(), after its direct
-    // light; nothing before prepare or a saved solution.
-    void add_final_gather(DisplayMesh& display, bool near_surfaces_only, Progress* progress) const;
-    // The final gather build_display adds for this choice (on, near or off): automatic is on over
-    // hierarchical and clustered transports, near over uniform and adaptive patches.
-    FinalGather resolved_final_gather(FinalGather choice) const;
+    // The size of the patches a solution is drawn on in smooth mode, 0 for its own (DisplayPatches): the
+    // uniform size for a hierarchy, whose leaves hold light linked to larger elements.
+    double display_patch_size() const;
     // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
     std::vector<glm::dvec3> element_direct() const;
     void continue_saved();

@@ -69,7 +69,7 @@ std::shared_ptr<const std::vector<ViewerMaterial>> scene_materials(const Scene& 
 
 std::vector<std::uint32_t> triangle_materials(const Scene& scene,
                                               const std::vector<ViewerMaterial>& materials,
-                                              const PatchMesh& patches, const DisplayMesh& display) {
+                                              const DisplayMesh& display) {
     std::vector<std::uint32_t> of_surface(scene.surfaces.size(), 0);
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const auto found = std::find_if(materials.begin(), materials.end(), [&](const ViewerMaterial& v) {
@@ -79,7 +79,7 @@ std::vector<std::uint32_t> triangle_materials(const Scene& scene,
     }
     std::vector<std::uint32_t> triangle(display.triangle_patch.size());
     for (std::size_t t = 0; t < triangle.size(); ++t)
-        triangle[t] = of_surface[patches.patches[display.triangle_patch[t]].surface];
+        triangle[t] = of_surface[display.patch_surface[display.triangle_patch[t]]];
     return triangle;
 }
 
@@ -398,7 +398,7 @@ void SolverWorker::show_preview() {
     publish_statistics();
     if (options_.display.mode != ColourMode::smooth || !options_.display.direct_light_at_vertices) return;
     progress_->begin("direct light", 0);
-    pipeline_->add_direct_light(display_);
+    pipeline_->add_preview_direct_light(display_);
     // New geometry: the direct light splits the triangles along shadow edges.
     if (!display_.direct.vertex.empty()) publish(true, true);
 }
@@ -589,8 +589,7 @@ void SolverWorker::publish(bool geometry_changed, bool with_radiance) {
         geometry->triangles.assign(first, first + display_.triangles.size() * 3);
         geometry->outline = patch_outline(display_);
         geometry->texcoords = display_.texcoords;
-        geometry->triangle_material =
-            triangle_materials(pipeline_->loaded().scene, *materials_, pipeline_->patches(), display_);
+        geometry->triangle_material = triangle_materials(pipeline_->loaded().scene, *materials_, display_);
         geometry->textured = display_.textured;
         geometry->bounds = bounding_box(pipeline_->loaded().scene);
         geometry->scene_camera = scene_camera(pipeline_->loaded().scene);

@@ -14,15 +14,16 @@
 namespace rad {
 namespace {
 
-// The cube at 0.5 (24 patches), with a camera, and values that differ per element and channel, so a field
-// read into the wrong place or the wrong channel shows.
+// The Cornell box at patch size 300, with a camera, and values that differ per element and channel, so a
+// field read into the wrong place or the wrong channel shows.
 SavedSolution example() {
     SavedSolution saved;
-    saved.scene = load_scene("builtin:cube");
+    // The Cornell box's blocks are surfaces of several faces, so the patches' faces differ.
+    saved.scene = load_scene("builtin:cornell");
     saved.scene.warnings.clear();
     saved.scene.camera = Camera{{0.5, 0.5, 0.9}, {0.5, 0.4, 0.0}, {0.0, 1.0, 0.1}, 70.0};
     MeshingOptions meshing;
-    meshing.patch_size = 0.5;
+    meshing.patch_size = 300.0;
     saved.patches = build_patches(saved.scene, meshing);
     // Outlines, as a hierarchical mesh has them: each patch's corners listed.
     saved.patches.outline_begin.push_back(0);
@@ -110,7 +111,7 @@ TEST(SavedSolution, RoundTripsEveryField) {
     }
     // The scene made again meshes as the saved patches do.
     MeshingOptions meshing;
-    meshing.patch_size = 0.5;
+    meshing.patch_size = 300.0;
     EXPECT_EQ(build_patches(b.scene, meshing).points, a.patches.points);
 
     const PatchMesh &pa = a.patches, &pb = b.patches;
@@ -118,12 +119,16 @@ TEST(SavedSolution, RoundTripsEveryField) {
     EXPECT_EQ(pb.positions, pa.positions);
     EXPECT_EQ(pb.corners, pa.corners);
     ASSERT_EQ(pb.patches.size(), pa.patches.size());
+    std::uint32_t faces = 0;
     for (std::size_t p = 0; p < pa.size(); ++p) {
         EXPECT_EQ(pb.patches[p].surface, pa.patches[p].surface);
+        EXPECT_EQ(pb.patches[p].face, pa.patches[p].face);
+        faces = std::max(faces, pa.patches[p].face);
         EXPECT_EQ(pb.patches[p].area, pa.patches[p].area);
         EXPECT_EQ(pb.patches[p].centroid, pa.patches[p].centroid);
         EXPECT_EQ(pb.patches[p].normal, pa.patches[p].normal);
     }
+    EXPECT_GT(faces, 0u);  // the check above saw faces other than the first
     EXPECT_EQ(pb.surface_begin, pa.surface_begin);
     EXPECT_EQ(pb.outline_begin, pa.outline_begin);
     EXPECT_EQ(pb.outline, pa.outline);
@@ -238,6 +243,9 @@ TEST(SavedSolution, RefusesNonFiniteValuesAndIndicesOutOfRange) {
     SavedSolution bad_surface = example();
     bad_surface.patches.patches[2].surface = 99;
     expect_refused(encode_saved_solution(bad_surface), "patch surface 99 is out of range");
+    SavedSolution bad_face = example();
+    bad_face.patches.patches[2].face = 1'000'000;
+    expect_refused(encode_saved_solution(bad_face), "patch face 1000000 is out of range");
     SavedSolution bad_reflectance = example();
     bad_reflectance.scene.surfaces[0].material.reflectance.x = 1.0;
     expect_refused(encode_saved_solution(bad_reflectance), "reflectance");

@@ -98,8 +98,17 @@ TEST(RenderCommand, FurnaceShowsEOverOneMinusRhoOverPiEverywhere) {
     EXPECT_LT(worst_furnace_error(image), 0.005f);
 }
 
-// The same furnace clustered, its last bounce gathered at every vertex (the default over clustering): every
-// ray meets a face of B = 2, so the gather is exact too.
+// The same furnace clustered, drawn on patches of the uniform size that gather their own last bounce, and
+// its vertices gathering too: every ray meets a face of B = 2, so both gathers are exact.
+TEST(RenderCommand, ClusteredFurnaceAtItsDefaultsShowsEOverOneMinusRhoOverPi) {
+    test::TempDir dir;
+    const Image image = render({write_furnace(dir), "--subdivision", "clustered", "--width", "96", "--height",
+                                "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
+                               (dir.path() / "furnace.pfm").string());
+    EXPECT_LT(worst_furnace_error(image), 0.005f);
+}
+
+// Every vertex gathering (`on`) over the clustered furnace.
 TEST(RenderCommand, ClusteredFurnaceWithItsFinalGatherShowsEOverOneMinusRhoOverPi) {
     test::TempDir dir;
     const Image image =

@@ -5,7 +5,6 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
-#include <limits>
 #include <numbers>
 #include <span>
 #include <stdexcept>
@@ -13,15 +12,10 @@
 #include "display/patch_gradients.hpp"
 #include "display/patch_texturing.hpp"
 #include "display/seam_vertices.hpp"
-#include "util/luminance.hpp"
 
 namespace rad {
 
 namespace {
-
-// How far beyond the range of its patches a vertex's reconstructed radiosity may go, as a share of that
-// range.
-constexpr double kReconstructionMargin = 1.0;
 
 void add_triangles(const PatchMesh& mesh, std::size_t q, const std::uint32_t* vertex, DisplayMesh& display) {
     const auto patch = static_cast<std::uint32_t>(q);
@@ -225,120 +219,11 @@ DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& o
             ? build_flat(patches, textures)
             : build_smooth(patches, options.crease_angle_degrees, options.reconstruction, textures);
     display.patch_count = patches.size();
+    display.patch_surface.reserve(patches.size());
+    for (const Patch& p : patches.patches) display.patch_surface.push_back(p.surface);
     close_seams(display);
     textures.finish(display);
     return display;
-}
-
-double direct_light_share(const DisplayMesh& display, std::span<const glm::dvec3> radiosity) {
-    const DisplayMesh::DirectLight& direct = display.direct;
-    if (direct.vertex.empty() || radiosity.size() != direct.patch.size()) return 0.0;
-    double held = 0.0, full = 0.0;
-    for (std::size_t q = 0; q < radiosity.size(); ++q) {
-        held += direct.area[q] * luminance(radiosity[q] - direct.emission[q]);
-        full += direct.area[q] * luminance(direct.patch[q]);
-    }
-    return full > 0.0 ? std::clamp(held / full, 0.0, 1.0) : 0.0;
-}
-
-namespace {
-
-// Vertex v's value from the patches around it: their weighted values, kept within the range of the
-// patches it is made from, widened by that range. Extrapolation overshoots beside a sharp edge in the
-// light, and without bound where a patch's neighbours lie nearly in a line (small elements beside large
-// ones); the margin keeps a linear field's border vertices (half a patch or more beyond the last centroid,
-// at a T-vertex) exact. Light is never negative.
-glm::dvec3 reconstruct(const DisplayMesh& display, std::span<const glm::dvec3> values, std::size_t v) {
-    glm::dvec3 sum(0.0), low(std::numeric_limits<double>::infinity()), high(0.0);
-    for (std::uint32_t k = display.weight_begin[v]; k < display.weight_begin[v + 1]; ++k) {
-        const glm::dvec3& b = values[display.weight_patch[k]];
-        sum += static_cast<double>(display.weight[k]) * b;
-        low = glm::min(low, b);
-        high = glm::max(high, b);
-    }
-    const glm::dvec3 margin = kReconstructionMargin * (high - low);
-    return glm::clamp(sum, glm::max(low - margin, glm::dvec3(0.0)), high + margin);
-}
-
-// What vertex v's row gathers: ρ Σ weight (B − source).
-glm::dvec3 gathered(const DisplayMesh::FinalGather& gather, std::span<const glm::dvec3> radiosity,
-                    std::size_t v) {
-    glm::dvec3 sum(0.0);
-    for (std::uint32_t k = gather.row_begin[v]; k < gather.row_begin[v + 1]; ++k) {
-        const std::uint32_t q = gather.patch[k];
-        sum += static_cast<double>(gather.weight[k]) * (radiosity[q] - gather.source[q]);
-    }
-    return gather.reflectance[v] * sum;
-}
-
-// vertex_radiance, with the vertices' gathered rows over `gathered_from`.
-void shown_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                    std::span<const glm::dvec3> gathered_from, std::span<glm::vec3> radiance,
-                    std::optional<double> direct_share, bool final_gather) {
-    if (radiance.size() != display.vertex_count()) {
-        throw std::invalid_argument("vertex_radiance: the output does not have one entry per vertex");
-    }
-    if (radiosity.size() != display.patch_count || gathered_from.size() != display.patch_count) {
-        throw std::invalid_argument("vertex_radiance: the radiosity does not have one entry per patch");
-    }
-    const std::span<const glm::dvec3> solution = gathered_from;
-    // Where the vertices have direct light of their own, the patches give the rest.
-    const bool has_direct = !display.direct.vertex.empty();
-    const double share =
-        has_direct ? std::clamp(direct_share.value_or(direct_light_share(display, radiosity)), 0.0, 1.0)
-                   : 0.0;
-    std::vector<glm::dvec3> indirect;
-    if (share > 0.0) {
-        indirect.resize(radiosity.size());
-        for (std::size_t q = 0; q < indirect.size(); ++q)
-            indirect[q] = radiosity[q] - share * display.direct.patch[q];
-        radiosity = indirect;
-    }
-    // A textured patch contributes the irradiance it receives, which the pixel multiplies by its albedo.
-    std::vector<glm::dvec3> irradiance;
-    if (!display.patch_irradiance.empty()) {
-        irradiance.assign(radiosity.begin(), radiosity.end());
-        for (std::size_t q = 0; q < irradiance.size(); ++q) {
-            const DisplayMesh::PatchIrradiance& p = display.patch_irradiance[q];
-            if (p.textured) irradiance[q] = glm::max(irradiance[q] - p.emission, 0.0) * p.inverse_albedo;
-        }
-        radiosity = irradiance;
-    }
-    const DisplayMesh::FinalGather& gather = display.gather;
-    const bool gathers = final_gather && !gather.empty();
-    for (std::size_t v = 0; v < display.vertex_count(); ++v) {
-        if (display.weight_begin[v] == display.weight_begin[v + 1]) {
-            radiance[v] = glm::vec3(0.0f);  // no patch: no light (and no range to keep within)
-            continue;
-        }
-        const bool row = gathers && gather.row_begin[v] != gather.row_begin[v + 1];
-        glm::dvec3 sum = row ? reconstruct(display, gather.emission, v) + gathered(gather, solution, v)
-                             : reconstruct(display, radiosity, v);
-        if (share > 0.0) sum += share * glm::dvec3(display.direct.vertex[v]);
-        radiance[v] = glm::vec3(glm::max(sum, 0.0) / std::numbers::pi);
-    }
-}
-
-}  // namespace
-
-void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                     std::span<glm::vec3> radiance, std::optional<double> direct_share, bool final_gather) {
-    shown_radiance(display, radiosity, radiosity, radiance, direct_share, final_gather);
-}
-
-std::vector<glm::vec3> stepped_vertex_radiance(const DisplayMesh& display,
-                                               std::span<const glm::dvec3> radiosity,
-                                               std::span<const glm::dvec3> previous) {
-    std::vector<glm::vec3> radiance(display.vertex_count());
-    shown_radiance(display, radiosity, previous, radiance, std::nullopt, true);
-    return radiance;
-}
-
-std::vector<glm::vec3> vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
-                                       std::optional<double> direct_share, bool final_gather) {
-    std::vector<glm::vec3> radiance(display.vertex_count());
-    vertex_radiance(display, radiosity, radiance, direct_share, final_gather);
-    return radiance;
 }
 
 }  // namespace rad

@@ -7,8 +7,8 @@
 //   scene:    u8 has_camera [dvec3 eye, target, up, f64 fov]; u64 surfaces; per surface: name, material
 //             name, dvec3 ρ, dvec3 Le, u64 vertices, dvec3 each, u64 faces, per face u32 k and k u32 indices
 //   patches:  u64 points, dvec3 each, then as many float3 positions; u64 patches (= n), u32×4 corners each;
-//             per patch u32 surface, f64 area, dvec3 centroid, dvec3 normal; u64 + u32 surface_begin;
-//             u64 + u32 outline_begin; u64 + u32 outline
+//             per patch u32 surface, u32 face, f64 area, dvec3 centroid, dvec3 normal; u64 + u32
+//             surface_begin; u64 + u32 outline_begin; u64 + u32 outline
 //   elements: n f64 area, n dvec3 ρ, n dvec3 E, n dvec3 solution, n dvec3 display solution
 //   report:   u64 steps, f64 residual, status, status_message
 #include "rad/io/saved_solution.hpp"
@@ -344,6 +344,7 @@ void write_patches(Writer& w, const PatchMesh& m) {
         for (int k = 0; k < 4; ++k) w.u32(c[k]);
     for (const Patch& p : m.patches) {
         w.u32(p.surface);
+        w.u32(p.face);
         w.f64(p.area);
         w.vec(p.centroid);
         w.vec(p.normal);
@@ -353,7 +354,8 @@ void write_patches(Writer& w, const PatchMesh& m) {
     w.indices(m.outline);
 }
 
-PatchMesh read_patches(Reader& r, std::size_t elements, std::size_t surfaces) {
+PatchMesh read_patches(Reader& r, std::size_t elements, const Scene& scene) {
+    const std::size_t surfaces = scene.surfaces.size();
     PatchMesh m;
     // A point is its double corner and its float copy: 36 bytes.
     const std::size_t points = r.count("point count", 36);
@@ -365,8 +367,8 @@ PatchMesh read_patches(Reader& r, std::size_t elements, std::size_t surfaces) {
         const float y = r.f32("position");
         p = {x, y, r.f32("position")};
     }
-    // A patch is 16 bytes of corners and 4 + 56 of its measures.
-    const std::size_t patches = r.count("patch count", 76);
+    // A patch is 16 bytes of corners and 8 + 56 of its measures.
+    const std::size_t patches = r.count("patch count", 80);
     if (patches != elements) {
         r.fail("patch count " + std::to_string(patches) + " differs from the element count " +
                std::to_string(elements));
@@ -382,6 +384,9 @@ PatchMesh read_patches(Reader& r, std::size_t elements, std::size_t surfaces) {
     for (Patch& p : m.patches) {
         p.surface = r.u32("patch surface");
         if (p.surface >= surfaces) r.fail("patch surface " + std::to_string(p.surface) + " is out of range");
+        p.face = r.u32("patch face");
+        if (p.face >= scene.surfaces[p.surface].mesh.n_faces())
+            r.fail("patch face " + std::to_string(p.face) + " is out of range");
         p.area = r.f64("patch area");
         if (p.area < 0.0) r.fail("a patch area is negative");
         p.centroid = r.vec("patch centroid");
@@ -485,7 +490,7 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
     saved.settings = read_settings(r);
     saved.scene = read_scene(r);
     saved.scene.source = saved.settings.scene_source;
-    saved.patches = read_patches(r, n, saved.scene.surfaces.size());
+    saved.patches = read_patches(r, n, saved.scene);
     saved.patches.back_to_back = back_to_back_surfaces(saved.scene);
     saved.area.resize(n);
     for (double& a : saved.area) {

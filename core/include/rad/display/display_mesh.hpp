@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "rad/display/display_patches.hpp"
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/texture.hpp"
 
@@ -99,7 +100,12 @@ struct DisplayMesh {
     std::vector<std::uint32_t> weight_begin{0};
     std::vector<std::uint32_t> weight_patch;
     std::vector<float> weight;
-    std::size_t patch_count = 0;  // the radiosity vertex_radiance takes has one entry per patch
+    std::size_t patch_count = 0;               // the patches the display is drawn on
+    std::vector<std::uint32_t> patch_surface;  // per patch, its surface
+    // Where the display is drawn on patches of its own (DisplayPatches), how they take the solution's
+    // radiosity: vertex_radiance and direct_light_share take one entry per solution patch and apply it
+    // first. Empty: the display's patches are the solution's.
+    PatchRestriction from_solution;
     // Per vertex where any surface is textured (else empty); (0, 0) outside the textured ranges.
     std::vector<glm::vec2> texcoords;
     std::vector<TexturedRange> textured;            // in triangle order, not overlapping
@@ -129,8 +135,26 @@ struct DisplayMesh {
         bool empty() const { return row_begin.empty(); }
     };
     FinalGather gather;
+    // Where the display is drawn on patches of its own, the last bounce of each of them gathered from the
+    // solution's patches by rays (add_display_patch_gather), or all empty. A display patch then shows
+    // emission + s · direct.patch + reflectance · Σ weight · (B − source) over the solution's patches its
+    // rays met (s as for the vertices), in place of the mean of the solution's patches under it.
+    struct PatchGather {
+        std::vector<std::uint32_t> row_begin;  // per display patch + 1, into patch and weight
+        std::vector<std::uint32_t> patch;      // the solution's
+        std::vector<float> weight;
+        std::vector<glm::dvec3> emission;     // per display patch
+        std::vector<glm::dvec3> reflectance;  // per display patch
+        std::vector<glm::dvec3> source;       // per solution patch
+        bool empty() const { return row_begin.empty(); }
+    };
+    PatchGather patch_gather;
 
     std::size_t vertex_count() const { return positions.size(); }
+    // How many entries the radiosity given to vertex_radiance has.
+    std::size_t solution_patch_count() const {
+        return from_solution.empty() ? patch_count : from_solution.source_count;
+    }
     // Whether patch q's vertices carry irradiance under a texture.
     bool textured_patch(std::uint32_t q) const {
         return !patch_irradiance.empty() && patch_irradiance[q].textured;

@@ -1,0 +1,69 @@
+// A hierarchy's solution is drawn on patches of the uniform size, each gathering its own last bounce, in
+// smooth mode; flat mode shows the leaves themselves.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "pipeline/radiosity_pipeline.hpp"
+
+namespace rad {
+namespace {
+
+RadiosityPipeline solved_cornell(const std::string& subdivision) {
+    PipelineOptions options;
+    options.scene.scene = "builtin:cornell";
+    options.subdivision.method = subdivision;
+    RadiosityPipeline pipeline(options);
+    pipeline.solve();
+    return pipeline;
+}
+
+// Per surface, the power Σ A B over patches of the given areas.
+std::map<std::uint32_t, double> surface_power(std::span<const std::uint32_t> surface,
+                                              std::span<const double> area, std::span<const glm::dvec3> b) {
+    std::map<std::uint32_t, double> power;
+    for (std::size_t q = 0; q < b.size(); ++q) power[surface[q]] += area[q] * (b[q].x + b[q].y + b[q].z);
+    return power;
+}
+
+TEST(HierarchyDisplay, ClusteredLeavesAreDrawnOnPatchesOfTheUniformSize) {
+    const RadiosityPipeline pipeline = solved_cornell("clustered");
+    const DisplayMesh& display = pipeline.display();
+    const std::size_t uniform =
+        build_patches(pipeline.loaded().scene,
+                      MeshingOptions{.patch_size = default_patch_size(pipeline.loaded().scene)})
+            .size();
+    EXPECT_EQ(display.patch_count, uniform);
+    EXPECT_EQ(display.solution_patch_count(), pipeline.patches().size());
+    EXPECT_GT(pipeline.patches().size(), 4 * uniform);  // far fewer vertices than the leaves have
+    EXPECT_FALSE(display.patch_gather.empty());
+    EXPECT_EQ(pipeline.vertex_radiance().size(), display.vertex_count());
+
+    DisplayOptions flat;
+    flat.mode = ColourMode::flat;
+    const DisplayMesh leaves = pipeline.build_display(flat);
+    EXPECT_EQ(leaves.patch_count, pipeline.patches().size());
+    EXPECT_TRUE(leaves.from_solution.empty());
+}
+
+TEST(HierarchyDisplay, TheDisplaysPatchesHoldEachSurfacesPower) {
+    // The leaves' means, carried to the display's patches by the area under each and weighted by their
+    // exposed shares, keep every surface's power over its exposed area within 1 %: no leaf is lost or counted
+    // twice, and the floor under the blocks counts for neither.
+    const RadiosityPipeline pipeline = solved_cornell("hierarchical");
+    const DisplayMesh& display = pipeline.display();
+    const std::vector<glm::dvec3>& b = pipeline.solver().display_solution();
+    std::vector<std::uint32_t> leaf_surface;
+    for (const Patch& p : pipeline.patches().patches) leaf_surface.push_back(p.surface);
+    ASSERT_EQ(display.direct.area.size(), display.patch_count);  // the display patches' exposed areas
+    const auto held = surface_power(leaf_surface, pipeline.transport().area, b);
+    const auto shown =
+        surface_power(display.patch_surface, display.direct.area, display.from_solution.apply(b));
+    ASSERT_EQ(shown.size(), held.size());
+    for (const auto& [surface, power] : held) {
+        EXPECT_NEAR(shown.at(surface), power, 0.01 * power) << "surface " << surface;
+    }
+}
+
+}  // namespace
+}  // namespace rad
