@@ -62,14 +62,14 @@ void add_subdivision_options(CLI::App& command, SubdivisionOptions& options) {
     command
         .add_option("--refine-tol", options.tolerance,
                     "adaptive: the relative step between neighbours that splits them (default 0.15); "
-                    "hierarchical: the error a link may leave in its receiver, relative to the scene's mean "
-                    "radiosity (default 0.02)")
+                    "hierarchical and clustered: the error a link may leave in its receiver, relative to the "
+                    "scene's mean radiosity (default: hierarchical 0.02, clustered 0.05)")
         ->check(positive_number());
     command
         .add_option("--min-patch-size", options.min_patch_size,
-                    "adaptive and hierarchical: patches are not split below this edge, in scene units "
-                    "(default: adaptive, each first patch's longest edge / 8; hierarchical, the largest base "
-                    "patch edge / 64)")
+                    "adaptive, hierarchical and clustered: patches are not split below this edge, in scene "
+                    "units (default: adaptive, each first patch's longest edge / 8; hierarchical, the largest "
+                    "base patch edge / 64; clustered, the scene's largest extent / 64)")
         ->check(positive_number());
 }
 

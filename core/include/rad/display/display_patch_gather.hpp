@@ -15,7 +15,7 @@ namespace rad {
 // Most and fewest gather rays per display patch, and the rays of one display's patch gather at most. Below
 // the fewest the display patches keep the mean of the leaves under them.
 inline constexpr int kPatchGatherRays = 512;
-inline constexpr int kPatchGatherMinRays = 128;
+inline constexpr int kPatchGatherMinRays = 64;
 inline constexpr std::size_t kPatchGatherRayBudget = 8'000'000;
 
 struct DisplayPatchGatherInput {

@@ -264,8 +264,9 @@ std::unique_ptr<ClusteredTransport> make_clustered_transport(const Scene& scene,
     append_patch_materials(scene, base, h->reflectance, h->emission);
     ClusteredReport report;
     report.base_patches = base.size();
-    report.min_patch_size =
-        options.min_patch_size > 0.0 ? options.min_patch_size : bounding_box(scene).largest_extent() / 256.0;
+    report.min_patch_size = options.min_patch_size > 0.0
+                                ? options.min_patch_size
+                                : bounding_box(scene).largest_extent() / kClusteredMinPatchFraction;
     check_memory(base.size(), report, options, progress);
     if (progress) progress->begin("clustering", 0);
     build_clusters(base, options.max_cluster_patches, *h);

@@ -25,11 +25,17 @@ namespace rad {
 // surfaces present along each of the six axis directions (exact for axis-aligned surfaces, a smooth
 // approximation otherwise); an isotropic cluster (projected area A / 4 in every direction) is the
 // alternative (isotropic_clusters), and for flat clusters such as a tessellated wall it is four times off.
+// A quarter of the uniform patch size (a sixteenth of the extent): the display draws a hierarchy on patches
+// of that size, each gathering its own last bounce, so finer leaves cost links without showing
+// (docs/measurements.md, "Hierarchies drawn on patches of their own").
+inline constexpr double kClusteredMinPatchFraction = 64.0;
+
 struct ClusteredOptions {
     // A link is refined while reflectance × the source's radiosity × the link's form-factor bound exceeds
     // tolerance × the scene's mean radiosity.
     double tolerance = 0.05;
-    // Elements are not split when their longest edge is at most this; 0 picks the scene's extent / 256.
+    // Elements are not split when their longest edge is at most this; 0 picks the scene's largest extent /
+    // kClusteredMinPatchFraction.
     double min_patch_size = 0.0;
     int visibility_rays = 4;  // shadow rays per link
     // Shadow rays per leaf for the emitters' direct light (at most 64 per emitter base patch), where it is
