@@ -48,8 +48,11 @@ DrawnPatches restricted_patches(const DisplayPatches& display, const SolvedPatch
     return out;
 }
 
+// On the display's own patches each vertex keeps its exact value: the patches' means of the direct light
+// are the leaves', which a hierarchy links to larger elements (constant over them), and the patches' own
+// gather holds the rest of their light.
 void add_direct_light(DisplayMesh& display, const Scene& scene, const DrawnPatches& drawn,
-                      const RayScene& rays, std::uint64_t seed) {
+                      const RayScene& rays, std::uint64_t seed, bool keep_patch_means) {
     const std::vector<glm::dvec3> emitted = emitted_radiosity(scene, *drawn.mesh);
     add_vertex_direct_light(display, {.patches = drawn.mesh,
                                       .rays = &rays,
@@ -58,7 +61,8 @@ void add_direct_light(DisplayMesh& display, const Scene& scene, const DrawnPatch
                                       .reflectance = drawn.reflectance,
                                       .area = drawn.area,
                                       .patch_direct = drawn.direct,
-                                      .seed = seed});
+                                      .seed = seed,
+                                      .keep_patch_means = keep_patch_means});
 }
 
 void add_final_gather(DisplayMesh& display, const Scene& scene, const DrawnPatches& drawn,
@@ -122,7 +126,7 @@ DisplayMesh build_solution_display(const Scene& scene, const SolvedPatches& solv
                         draws_vertex_direct_light(*drawn.mesh, emitted_radiosity(scene, *drawn.mesh));
     if (!direct && gather == FinalGather::off) return display;
     const RayScene rays(*drawn.mesh);
-    if (direct) add_direct_light(display, scene, drawn, rays, settings.seed);
+    if (direct) add_direct_light(display, scene, drawn, rays, settings.seed, !own);
     if (gather != FinalGather::off) {
         if (own) {
             add_patch_gather(display, scene, *own, drawn, solved, *solution_rays, settings.seed, progress);

@@ -5,6 +5,9 @@
 #include <map>
 
 #include "pipeline/radiosity_pipeline.hpp"
+#include "rad/io/image_file.hpp"
+#include "rad/reference/image_error.hpp"
+#include "test_support.hpp"
 
 namespace rad {
 namespace {
@@ -62,6 +65,23 @@ TEST(HierarchyDisplay, TheDisplaysPatchesHoldEachSurfacesPower) {
     ASSERT_EQ(shown.size(), held.size());
     for (const auto& [surface, power] : held) {
         EXPECT_NEAR(shown.at(surface), power, 0.01 * power) << "surface " << surface;
+    }
+}
+
+// The Cornell box at the defaults of each hierarchy against the bench's path-traced image (512 paths per
+// pixel, 0.5 % of noise in this measure), 256²: measured 2.25 % (hierarchical) and 2.25 % (clustered). Drawn
+// with the vertices' direct light held to the leaves' means, which a hierarchy links to larger elements, they
+// were 5.5 % and 2.9 %.
+TEST(HierarchyDisplay, TheCornellBoxIsWithinThreePercentOfThePathTracer) {
+    const Image reference = read_image(std::string(RAD_SOURCE_DIR) + "/docs/bench/cornell-path-traced.pfm");
+    for (const std::string subdivision : {"hierarchical", "clustered"}) {
+        test::TempDir dir;
+        const std::string out = (dir.path() / "cornell.pfm").string();
+        const test::CommandResult result = test::run_radiosity(
+            {"render", "builtin:cornell", "--subdivision", subdivision, "--out", out, "--width",
+             std::to_string(reference.width), "--height", std::to_string(reference.height)});
+        ASSERT_EQ(result.status, 0) << result.err;
+        EXPECT_LT(block_relative_error(read_image(out), reference), 0.03) << subdivision;
     }
 }
 
