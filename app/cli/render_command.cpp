@@ -11,6 +11,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "cli/camera_option.hpp"
@@ -27,6 +28,8 @@
 #include "rad/display/auto_exposure.hpp"
 #include "rad/io/image_file.hpp"
 #include "rad/io/saved_solution.hpp"
+#include "rad/reference/image_error.hpp"
+#include "rad/reference/path_tracer.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/file_names.hpp"
 #include "rad/util/stopwatch.hpp"
@@ -48,6 +51,8 @@ struct RenderOptions {
     bool flat = false;
     bool outline = false;
     HeadlessPlatform gl_platform = HeadlessPlatform::automatic;
+    int path_traced = 0;  // paths per pixel of the path tracer's image instead; 0: radiosity's
+    std::string compare;  // a reference image to measure the image against
 };
 
 // Largest image side: 16384² float RGBA with 4 samples is already 4 GiB of framebuffer.
@@ -55,6 +60,8 @@ constexpr int kMaxImageSide = 16384;
 // A cameras file is a short list typed by people; more than this is not one (and would be that many images).
 constexpr std::size_t kMaxCameras = 10000;
 constexpr std::uintmax_t kMaxCamerasFileBytes = 1 << 20;
+// More paths per pixel than a reference needs (its noise falls as 1/√n) would run for days.
+constexpr int kMaxPathsPerPixel = 1 << 20;
 
 // One camera per line; blank lines and # comments are skipped. Errors name the file and line.
 std::vector<Camera> read_cameras_file(const std::string& path, const Camera& fallback) {
@@ -106,6 +113,64 @@ std::string image_path(const std::string& out, std::size_t index, std::size_t co
         .string();
 }
 
+// --compare's reference, read before any long work. Errors name the option and the file.
+std::optional<Image> read_reference(const RenderOptions& options) {
+    if (options.compare.empty()) return std::nullopt;
+    if (lowercase_extension(options.compare) != ".pfm") {
+        throw InputError("--compare: " + options.compare + ": a reference must be a .pfm (linear radiance)");
+    }
+    Image reference;
+    try {
+        reference = read_image(options.compare);
+    } catch (const InputError& e) {
+        throw InputError(std::string("--compare: ") + e.what());
+    }
+    if (reference.width != options.width || reference.height != options.height) {
+        throw InputError("--compare: " + options.compare + " is " + std::to_string(reference.width) + "x" +
+                         std::to_string(reference.height) + ", the images are " +
+                         std::to_string(options.width) + "x" + std::to_string(options.height) +
+                         " (--width, --height)");
+    }
+    return reference;
+}
+
+// "PATH against REF: X % per 8 x 8 block, Y % per pixel".
+std::string comparison(const std::string& path, const Image& image, const Image& reference,
+                       const std::string& reference_path) {
+    char line[64];
+    std::snprintf(line, sizeof line, ": %.2f %% per 8 x 8 block, %.2f %% per pixel",
+                  100.0 * block_relative_error(image, reference),
+                  100.0 * block_relative_error(image, reference, {.block_size = 1}));
+    return path + " against " + reference_path + line;
+}
+
+// --path-traced: the path tracer's image from each camera, over the same geometry, instead of radiosity's.
+int write_path_traced(const RenderOptions& options, const RadiosityPipeline& pipeline,
+                      const std::vector<Camera>& cameras, const std::optional<Image>& reference) {
+    const PathTracer tracer(pipeline.loaded().scene, pipeline.patches(),
+                            {.seed = options.pipeline.form_factors.seed});
+    for (std::size_t k = 0; k < cameras.size(); ++k) {
+        ReferenceImage traced;
+        {
+            Progress progress;
+            const ProgressBar bar(progress);
+            traced = tracer.render(cameras[k], options.width, options.height, options.path_traced, &progress);
+        }
+        const std::string path = image_path(options.out, k, cameras.size());
+        const double exposure = options.exposure.for_image(auto_exposure(traced.image));
+        write_image(path, traced.image, exposure);
+        std::printf(
+            "wrote %s (%dx%d, path traced: %d paths per pixel, %.1f s; its own noise %.2f %% per 8 x 8 "
+            "block, %.2f %% per pixel)\n",
+            path.c_str(), options.width, options.height, options.path_traced, traced.stats.seconds,
+            100.0 * block_relative_noise(traced.image, traced.standard_error),
+            100.0 * block_relative_noise(traced.image, traced.standard_error, {.block_size = 1}));
+        if (reference)
+            std::printf("%s\n", comparison(path, traced.image, *reference, options.compare).c_str());
+    }
+    return 0;
+}
+
 int run_render(RenderOptions options, const CLI::App& command) {
     check_image_path(options.out);
     check_export_paths(options.exports);
@@ -116,6 +181,10 @@ int run_render(RenderOptions options, const CLI::App& command) {
     const std::string& scene = options.pipeline.scene.scene;
     const bool saved = is_saved_solution_path(scene);
     if (saved) refuse_solving_options(command, scene);
+    if (options.path_traced > 0 && !options.exports.empty()) {
+        throw InputError("--export: writes radiosity's mesh; not with --path-traced");
+    }
+    const std::optional<Image> reference = read_reference(options);
 
     const Stopwatch load_clock;
     std::unique_ptr<RadiosityPipeline> pipeline =
@@ -124,6 +193,7 @@ int run_render(RenderOptions options, const CLI::App& command) {
             : std::make_unique<RadiosityPipeline>(options.pipeline);
     const double load_seconds = load_clock.seconds();
     const std::vector<Camera> cameras = chosen_cameras(options, scene_camera(pipeline->loaded().scene));
+    if (options.path_traced > 0) return write_path_traced(options, *pipeline, cameras, reference);
 
     // A saved solution is drawn as saved; a scene is solved once for every camera.
     StepReport report;
@@ -160,10 +230,14 @@ int run_render(RenderOptions options, const CLI::App& command) {
     // Each image is written as soon as it is drawn, so many cameras never hold many images. Exports take
     // the first image's exposure.
     std::vector<double> exposures(cameras.size(), 0.0);
+    std::vector<std::string> comparisons;
     for (std::size_t k = 0; k < cameras.size(); ++k) {
         const Image image = renderer.render(cameras[k], options.width, options.height);
         exposures[k] = options.exposure.for_image(auto_exposure(image));
         write_image(image_path(options.out, k, cameras.size()), image, exposures[k]);
+        if (reference)
+            comparisons.push_back(
+                comparison(image_path(options.out, k, cameras.size()), image, *reference, options.compare));
     }
     const double render_seconds = render_clock.seconds();
 
@@ -191,6 +265,7 @@ int run_render(RenderOptions options, const CLI::App& command) {
             std::printf(", exposure %+.2f EV%s", exposures[k], options.exposure.automatic ? " auto" : "");
         std::printf(")\n");
     }
+    for (const std::string& line : comparisons) std::printf("%s\n", line.c_str());
     write_exports(options.exports, *pipeline, exposures.front(), std::cout);
     return 0;
 }
@@ -237,12 +312,22 @@ CommandRunner add_render_command(CLI::App& app) {
     render
         ->add_option(
             "--final-gather", options->pipeline.display.final_gather,
-            "The last bounce gathered at each vertex by rays, for light that varies across a patch: "
-            "auto (the default: every vertex of hierarchical and clustered solutions, whose leaves "
-            "take light linked to larger elements; near over uniform and adaptive patches), near (only "
-            "the vertices within two patch sizes of a face at least a patch across, 1024 rays each: "
-            "corners and contact, where uniform patches blur), on (every vertex) or off")
+            "The last bounce gathered by rays, for light that varies across a patch: auto (the "
+            "default) or near: the vertices within two patch sizes of a face at least a patch across, "
+            "1024 rays each (corners and contact, where patches blur); hierarchical and clustered "
+            "solutions are drawn on patches of the uniform size that first gather their own last bounce "
+            "from the leaves; on: every vertex, 256 rays; off: none")
         ->transform(CLI::CheckedTransformer(gathers, CLI::ignore_case));
+    render
+        ->add_option(
+            "--path-traced", options->path_traced,
+            "Write the path tracer's image instead, with this many paths per pixel (no form factors, "
+            "no solve): the independent reference radiosity is measured against")
+        ->check(CLI::Range(1, kMaxPathsPerPixel));
+    render->add_option("--compare", options->compare,
+                       "A reference image of the same size (.pfm, linear radiance; e.g. one --path-traced "
+                       "wrote): print each image's error against it, per 8 x 8 block and per pixel, in "
+                       "luminance (the bench's measures)");
     add_gl_platform_option(*render, options->gl_platform);
     return [render, options]() -> int {
         if (!*render) return -1;
