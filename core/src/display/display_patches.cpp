@@ -161,16 +161,6 @@ std::vector<glm::dvec3> PatchRestriction::apply(std::span<const glm::dvec3> valu
     return out;
 }
 
-std::vector<double> PatchRestriction::apply(std::span<const double> values) const {
-    if (values.size() != source_count)
-        throw std::invalid_argument("PatchRestriction: the values do not have one entry per solution patch");
-    std::vector<double> out(size(), 0.0);
-    for (std::size_t d = 0; d < out.size(); ++d)
-        for (std::uint32_t k = begin[d]; k < begin[d + 1]; ++k)
-            out[d] += static_cast<double>(share[k]) * values[source[k]];
-    return out;
-}
-
 DisplayPatches make_display_patches(const Scene& scene, const PatchMesh& solution,
                                     const RayScene& solution_rays, std::span<const double> exposed,
                                     double patch_size) {

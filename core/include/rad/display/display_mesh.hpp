@@ -37,9 +37,9 @@ enum class ColourMode { smooth, flat };
 //          unlimited it would show bright and dark artifacts. Negative results are shown as 0.
 enum class Reconstruction { average, linear };
 
-// automatic: the builder decides by the transport: a hierarchy's leaves hold the light of links made for a
-//            larger receiver, so every vertex gathers; uniform patches hold their own, and only vertices
-//            beside another surface gather (near).
+// automatic: near. A hierarchy's leaves hold the light of links made for a larger receiver; its display is
+//            drawn on patches of its own, which gather their last bounce first (DisplayPatches,
+//            add_display_patch_gather), and every vertex gathers where they cannot.
 // near: only vertices beside another surface (VertexFinalGatherInput::near_surfaces_only), any transport.
 // on: every vertex. off: none.
 enum class FinalGather { automatic, near, on, off };
@@ -170,12 +170,12 @@ DisplayMesh build_display_mesh(const PatchMesh& patches, const DisplayOptions& o
 // where the mesh has no direct light of its own (DisplayMesh::direct empty).
 double direct_light_share(const DisplayMesh& display, std::span<const glm::dvec3> radiosity);
 
-// Radiance L = B / π per display vertex (H / π on textured surfaces), from the radiosity B per patch (a
-// Solver's display_solution()). `direct_share` is what direct_light_share measures unless given: a view of
-// one bounce alone gives 1 for the first and 0 for the others.
-// Writes radiance[v] for every vertex; radiance must hold vertex_count() entries.
-// `final_gather` false shows the patches' reconstruction even where the vertices have a gather (a view of
-// one bounce's light, which is no solution to gather from).
+// Radiance L = B / π per display vertex (H / π on textured surfaces), from the radiosity B per patch of the
+// solution (a Solver's display_solution(); where the display has patches of its own, from_solution and
+// patch_gather carry it to them first). `direct_share` is what direct_light_share measures unless given: a
+// view of one bounce alone gives 1 for the first and 0 for the others. Writes radiance[v] for every vertex;
+// radiance must hold vertex_count() entries. `final_gather` false shows the patches' reconstruction even
+// where the vertices have a gather (a view of one bounce's light, which is no solution to gather from).
 void vertex_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radiosity,
                      std::span<glm::vec3> radiance, std::optional<double> direct_share = {},
                      bool final_gather = true);

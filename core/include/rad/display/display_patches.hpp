@@ -25,7 +25,6 @@ struct PatchRestriction {
     std::size_t size() const { return begin.empty() ? 0 : begin.size() - 1; }
     // Per display patch, from one value per solution patch. Throws std::invalid_argument for another count.
     std::vector<glm::dvec3> apply(std::span<const glm::dvec3> values) const;
-    std::vector<double> apply(std::span<const double> values) const;
 };
 
 // A hierarchy's leaves are many, of every size (the finest where a link asked for them, a thousandth of the
@@ -36,7 +35,8 @@ struct PatchRestriction {
 struct DisplayPatches {
     PatchMesh mesh;
     PatchRestriction from_solution;
-    std::vector<double> exposed;  // per display patch: the share of its area not covered, from the leaves'
+    std::vector<double>
+        exposed;  // per display patch, the share of its area not covered (the leaves' under it)
 };
 
 // Samples per display patch, on a regular grid of its area: which leaf holds each is found by a short ray
