@@ -67,19 +67,6 @@ TEST(RenderCommand, CornellBoxMatchesTheGoldenImage) {
     EXPECT_TRUE(result.passed) << result.message;
 }
 
-// A closed cube, every face emitting E = 1 with reflectance 0.5: B = E / (1 - ρ) = 2 on every patch, so every
-// pixel seen from inside shows L = 2 / π.
-std::string write_furnace(const test::TempDir& dir) {
-    dir.write("furnace.mtl",
-              "newmtl glow\nKd 0.5 0.5 0.5\nKe 0.3183098861837907 0.3183098861837907 "
-              "0.3183098861837907\n");
-    return dir.write("furnace.obj",
-                     "mtllib furnace.mtl\nusemtl glow\n"
-                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                     // each face counter-clockwise seen from inside
-                     "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 4 3 7 8\nf 1 4 8 5\nf 2 6 7 3\n");
-}
-
 // The largest relative difference of any pixel's channel from the furnace's B / π = 2 / π.
 float worst_furnace_error(const Image& image) {
     const float expected = static_cast<float>(2.0 / std::numbers::pi);
@@ -92,8 +79,8 @@ float worst_furnace_error(const Image& image) {
 
 TEST(RenderCommand, FurnaceShowsEOverOneMinusRhoOverPiEverywhere) {
     test::TempDir dir;
-    const Image image = render({write_furnace(dir), "--patch-size", "0.25", "--width", "96", "--height", "96",
-                                "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
+    const Image image = render({test::write_furnace(dir), "--patch-size", "0.25", "--width", "96", "--height",
+                                "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
                                (dir.path() / "furnace.pfm").string());
     EXPECT_LT(worst_furnace_error(image), 0.005f);
 }
@@ -102,8 +89,8 @@ TEST(RenderCommand, FurnaceShowsEOverOneMinusRhoOverPiEverywhere) {
 // its vertices gathering too: every ray meets a face of B = 2, so both gathers are exact.
 TEST(RenderCommand, ClusteredFurnaceAtItsDefaultsShowsEOverOneMinusRhoOverPi) {
     test::TempDir dir;
-    const Image image = render({write_furnace(dir), "--subdivision", "clustered", "--width", "96", "--height",
-                                "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
+    const Image image = render({test::write_furnace(dir), "--subdivision", "clustered", "--width", "96",
+                                "--height", "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
                                (dir.path() / "furnace.pfm").string());
     EXPECT_LT(worst_furnace_error(image), 0.005f);
 }
@@ -112,8 +99,8 @@ TEST(RenderCommand, ClusteredFurnaceAtItsDefaultsShowsEOverOneMinusRhoOverPi) {
 TEST(RenderCommand, ClusteredFurnaceWithItsFinalGatherShowsEOverOneMinusRhoOverPi) {
     test::TempDir dir;
     const Image image =
-        render({write_furnace(dir), "--subdivision", "clustered", "--final-gather", "on", "--width", "96",
-                "--height", "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
+        render({test::write_furnace(dir), "--subdivision", "clustered", "--final-gather", "on", "--width",
+                "96", "--height", "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
                (dir.path() / "furnace.pfm").string());
     EXPECT_LT(worst_furnace_error(image), 0.005f);
 }
@@ -123,7 +110,7 @@ TEST(RenderCommand, ClusteredFurnaceWithItsFinalGatherShowsEOverOneMinusRhoOverP
 TEST(RenderCommand, UniformFurnaceGatheredNearSurfacesShowsEOverOneMinusRhoOverPi) {
     test::TempDir dir;
     const Image image =
-        render({write_furnace(dir), "--patch-size", "0.25", "--final-gather", "near", "--width", "96",
+        render({test::write_furnace(dir), "--patch-size", "0.25", "--final-gather", "near", "--width", "96",
                 "--height", "96", "--camera", "0.5,0.5,0.9,0.3,0.4,0", "--fov", "100"},
                (dir.path() / "furnace.pfm").string());
     EXPECT_LT(worst_furnace_error(image), 0.005f);

@@ -16,17 +16,6 @@ namespace {
 
 using test::run_radiosity;
 
-// A closed cube, every face emitting E = 1 with reflectance 0.5: B = 2 everywhere, L = 2 / π in every pixel.
-std::string write_furnace(const test::TempDir& dir) {
-    dir.write("furnace.mtl",
-              "newmtl glow\nKd 0.5 0.5 0.5\nKe 0.3183098861837907 0.3183098861837907 "
-              "0.3183098861837907\n");
-    return dir.write("furnace.obj",
-                     "mtllib furnace.mtl\nusemtl glow\n"
-                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                     "f 1 2 3 4\nf 5 8 7 6\nf 1 5 6 2\nf 4 3 7 8\nf 1 4 8 5\nf 2 6 7 3\n");
-}
-
 const std::vector<std::string> kView = {"--width", "32",       "--height",
                                         "24",      "--camera", "0.5,0.5,0.9,0.3,0.4,0"};
 
@@ -49,7 +38,7 @@ std::pair<double, double> compared(const std::string& stdout_text, const std::st
 
 TEST(RenderCompare, ThePathTracedFurnaceShowsEOverOneMinusRhoOverPi) {
     test::TempDir dir;
-    const std::string scene = write_furnace(dir);
+    const std::string scene = test::write_furnace(dir);
     const std::string traced = (dir.path() / "traced.pfm").string();
     const auto result = render({scene, "--path-traced", "64", "--out", traced});
     ASSERT_EQ(result.status, 0) << result.err;
@@ -64,7 +53,7 @@ TEST(RenderCompare, ThePathTracedFurnaceShowsEOverOneMinusRhoOverPi) {
 
 TEST(RenderCompare, RadiosityAgainstThePathTracerAndAnImageAgainstItself) {
     test::TempDir dir;
-    const std::string scene = write_furnace(dir);
+    const std::string scene = test::write_furnace(dir);
     const std::string traced = (dir.path() / "traced.pfm").string();
     ASSERT_EQ(render({scene, "--path-traced", "64", "--out", traced}).status, 0);
     const std::string drawn = (dir.path() / "drawn.pfm").string();
@@ -85,7 +74,7 @@ TEST(RenderCompare, RadiosityAgainstThePathTracerAndAnImageAgainstItself) {
 
 TEST(RenderCompare, ReferencesThatCannotBeComparedAreRefusedBeforeAnyWork) {
     test::TempDir dir;
-    const std::string scene = write_furnace(dir);
+    const std::string scene = test::write_furnace(dir);
     const std::string small = (dir.path() / "small.pfm").string();
     ASSERT_EQ(run_radiosity(
                   {"render", scene, "--path-traced", "1", "--width", "8", "--height", "8", "--out", small})

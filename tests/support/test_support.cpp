@@ -86,4 +86,12 @@ std::string TempDir::write(const std::string& name, const std::string& text) con
     return p.string();
 }
 
+std::string write_furnace(const TempDir& dir) {
+    dir.write("furnace.mtl",
+              "newmtl glow\nKd 0.5 0.5 0.5\nKe 0.3183098861837907 0.3183098861837907 0.3183098861837907\n");
+    return dir.write("furnace.obj", std::string("mtllib furnace.mtl\nusemtl glow\n") +
+                                        kInwardUnitCubeCorners + kInwardUnitCubeFirstFace +
+                                        kInwardUnitCubeOtherFaces);
+}
+
 }  // namespace rad::test

@@ -45,4 +45,9 @@ class TempDir {
     std::filesystem::path path_;
 };
 
+// Writes furnace.obj and furnace.mtl into `dir`: the inward unit cube, every face emitting E = 1 (Le = 1 / π)
+// with reflectance 0.5, so B = E / (1 − ρ) = 2 everywhere and every pixel seen from inside shows L = 2 / π.
+// Returns the OBJ's path.
+std::string write_furnace(const TempDir& dir);
+
 }  // namespace rad::test

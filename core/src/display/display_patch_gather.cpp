@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "display/gather_rows.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad {
@@ -21,11 +22,6 @@ constexpr std::uint64_t kPatchGatherKey = 0x6a7e'f17a'1000'0002ull;
 // would only amplify its noise.
 constexpr double kFewestExposed = 0.05;
 
-struct Row {
-    std::vector<std::uint32_t> patch;
-    std::vector<float> weight;
-};
-
 struct Scratch {
     std::vector<Ray> rays;
     std::vector<double> weights;
@@ -34,7 +30,7 @@ struct Scratch {
 };
 
 void gather_row(const DisplayPatchGatherInput& input, std::uint32_t d, int count, double offset, Scratch& s,
-                Row& row) {
+                GatherRow& row) {
     s.rays.resize(static_cast<std::size_t>(count));
     s.weights.resize(s.rays.size());
     s.hits.resize(s.rays.size());
@@ -78,7 +74,7 @@ void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInpu
         progress->note(std::to_string(n) + " patches x " + std::to_string(count) + " rays");
     }
     const double offset = ray_offset(patches);
-    std::vector<Row> rows(n);
+    std::vector<GatherRow> rows(n);
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, n, 16), [&](const tbb::blocked_range<std::size_t>& r) {
             Scratch scratch;
@@ -88,18 +84,7 @@ void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInpu
             if (progress) progress->advance(r.size());
         });
     DisplayMesh::PatchGather& gather = display.patch_gather;
-    std::size_t entries = 0;
-    for (const Row& row : rows) entries += row.patch.size();
-    gather.patch.reserve(entries);
-    gather.weight.reserve(entries);
-    gather.row_begin.reserve(n + 1);
-    gather.row_begin.push_back(0);
-    for (Row& row : rows) {
-        gather.patch.insert(gather.patch.end(), row.patch.begin(), row.patch.end());
-        gather.weight.insert(gather.weight.end(), row.weight.begin(), row.weight.end());
-        row = Row{};  // freed as it is copied
-        gather.row_begin.push_back(static_cast<std::uint32_t>(gather.patch.size()));
-    }
+    append_rows(rows, gather.row_begin, gather.patch, gather.weight);
     gather.emission.assign(input.emission.begin(), input.emission.end());
     gather.reflectance.assign(input.reflectance.begin(), input.reflectance.end());
     gather.source.assign(input.source.begin(), input.source.end());

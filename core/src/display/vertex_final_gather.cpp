@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "display/gather_rows.hpp"
 #include "display/vertex_origin.hpp"
 #include "sampling/sampling.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
@@ -21,11 +22,6 @@ namespace {
 
 // A key of the gather's random streams, apart from every other pass's.
 constexpr std::uint64_t kGatherKey = 0x6a7e'f17a'1000'0001ull;
-
-struct Row {
-    std::vector<std::uint32_t> patch;
-    std::vector<float> weight;
-};
 
 // What one thread's rows are traced with, kept between vertices.
 struct Scratch {
@@ -82,7 +78,7 @@ bool near_a_surface(const DisplayMesh& display, const VertexFinalGatherInput& in
 // Vertex v's row: the patches its rays meet from the front, each with its share of the rays.
 void gather_row(const DisplayMesh& display, const VertexFinalGatherInput& input,
                 std::span<const double> face_size, double offset, int count, std::size_t v, Scratch& s,
-                Row& row) {
+                GatherRow& row) {
     const glm::dvec3 normal(display.normals[v]);
     const double length = glm::length(normal);
     if (!(length > 0.0)) return;  // no side to gather on: the vertex keeps its patches' reconstruction
@@ -148,7 +144,7 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
         progress->note(std::to_string(vertices) + " vertices x " + std::to_string(count) + " rays" +
                        (input.near_surfaces_only ? " where a surface is near" : ""));
     }
-    std::vector<Row> rows(vertices);
+    std::vector<GatherRow> rows(vertices);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 64),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                           Scratch scratch;
@@ -162,20 +158,10 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
                           if (progress) progress->advance(range.size());
                       });
     DisplayMesh::FinalGather& gather = display.gather;
-    std::size_t entries = 0;
-    for (const Row& row : rows) entries += row.patch.size();
-    gather.patch.reserve(entries);
-    gather.weight.reserve(entries);
-    gather.row_begin.reserve(vertices + 1);
-    gather.row_begin.push_back(0);
+    append_rows(rows, gather.row_begin, gather.patch, gather.weight);
     gather.reflectance.resize(vertices);
-    for (std::size_t v = 0; v < vertices; ++v) {
-        gather.patch.insert(gather.patch.end(), rows[v].patch.begin(), rows[v].patch.end());
-        gather.weight.insert(gather.weight.end(), rows[v].weight.begin(), rows[v].weight.end());
-        rows[v] = Row{};  // freed as it is copied: the rows and the table are not held twice
-        gather.row_begin.push_back(static_cast<std::uint32_t>(gather.patch.size()));
+    for (std::size_t v = 0; v < vertices; ++v)
         gather.reflectance[v] = vertex_reflectance(display, input.reflectance, v);
-    }
     gather.emission.assign(input.emission.begin(), input.emission.end());
     gather.source.assign(input.source.begin(), input.source.end());
 }
