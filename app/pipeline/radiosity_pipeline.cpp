@@ -150,6 +150,18 @@ SavedSolution RadiosityPipeline::saved_solution() const {
     saved.solution.assign(solver_->solution().begin(), solver_->solution().end());
     saved.display_solution = solver_->display_solution();
     saved.direct = element_direct();
+    // The display patches' own gather is the display's longest part; kept, opening the file skips it.
+    const SolvedPatches solved{.mesh = &patches(),
+                               .area = t.area,
+                               .reflectance = t.reflectance,
+                               .emission = t.emission,
+                               .direct = saved.direct};
+    DisplayMesh::PatchGather table = display_patch_gather_table(
+        loaded_.scene, solved,
+        {.options = {}, .display_patch_size = display_patch_size(), .seed = options_.form_factors.seed});
+    saved.display_gather.row_begin = std::move(table.row_begin);
+    saved.display_gather.element = std::move(table.patch);
+    saved.display_gather.weight = std::move(table.weight);
     const StepReport& report = solver_->report();
     saved.report.steps = report.step;
     saved.report.residual = report.residual;
@@ -326,6 +338,7 @@ DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Prog
         return display;
     }
     std::vector<glm::dvec3> direct;
+    DisplayMesh::PatchGather traced;
     SolvedPatches solved{.mesh = &patches()};
     if (built_.transport) {
         const Transport& t = *built_.transport;
@@ -339,6 +352,10 @@ DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Prog
         solved.reflectance = saved_->reflectance;
         solved.emission = saved_->emission;
         solved.direct = saved_->direct;
+        traced.row_begin = saved_->display_gather.row_begin;
+        traced.patch = saved_->display_gather.element;
+        traced.weight = saved_->display_gather.weight;
+        if (!traced.empty()) solved.patch_gather = &traced;
     }
     const SolutionDisplaySettings settings{
         .options = options, .display_patch_size = display_patch_size(), .seed = options_.form_factors.seed};

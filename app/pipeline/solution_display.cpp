@@ -92,7 +92,8 @@ void add_patch_gather(DisplayMesh& display, const Scene& scene, const DisplayPat
                                        .solution_rays = &solution_rays,
                                        .source = source,
                                        .seed = seed,
-                                       .progress = progress});
+                                       .progress = progress,
+                                       .traced = solved.patch_gather});
 }
 
 std::vector<double> exposed_shares(const SolvedPatches& solved) {
@@ -139,6 +140,23 @@ DisplayMesh build_solution_display(const Scene& scene, const SolvedPatches& solv
     }
     if (own) display.from_solution = std::move(own->from_solution);
     return display;
+}
+
+DisplayMesh::PatchGather display_patch_gather_table(const Scene& scene, const SolvedPatches& solved,
+                                                    const SolutionDisplaySettings& settings) {
+    if (settings.display_patch_size <= 0.0) return {};
+    const RayScene solution_rays(*solved.mesh);
+    const DisplayPatches own = make_display_patches(scene, *solved.mesh, solution_rays,
+                                                    exposed_shares(solved), settings.display_patch_size);
+    const DrawnPatches drawn = restricted_patches(own, solved);
+    DisplayMesh rows;  // the table alone: no geometry
+    rows.patch_count = own.mesh.size();
+    add_patch_gather(rows, scene, own, drawn, solved, solution_rays, settings.seed, nullptr);
+    DisplayMesh::PatchGather table;
+    table.row_begin = std::move(rows.patch_gather.row_begin);
+    table.patch = std::move(rows.patch_gather.patch);
+    table.weight = std::move(rows.patch_gather.weight);
+    return table;
 }
 
 }  // namespace rad

@@ -24,6 +24,8 @@ struct SolvedPatches {
     std::span<const glm::dvec3> reflectance{};
     std::span<const glm::dvec3> emission{};
     std::span<const glm::dvec3> direct{};
+    // The display patches' own gather as traced before (a saved solution's), or null: traced here.
+    const DisplayMesh::PatchGather* patch_gather = nullptr;
 };
 
 struct SolutionDisplaySettings {
@@ -43,5 +45,10 @@ struct SolutionDisplaySettings {
 // is cancelled.
 DisplayMesh build_solution_display(const Scene& scene, const SolvedPatches& solved,
                                    const SolutionDisplaySettings& settings, Progress* progress = nullptr);
+
+// The display patches' own gather alone (its table: rows, patches and weights), for a saved solution to keep;
+// empty where the settings draw on the solution's own patches or the ray budget leaves the gather out.
+DisplayMesh::PatchGather display_patch_gather_table(const Scene& scene, const SolvedPatches& solved,
+                                                    const SolutionDisplaySettings& settings);
 
 }  // namespace rad

@@ -66,10 +66,11 @@ void add_subdivision_options(CLI::App& command, SubdivisionOptions& options) {
                     "scene's mean radiosity (default: hierarchical 0.02, clustered 0.05)")
         ->check(positive_number());
     command
-        .add_option("--min-patch-size", options.min_patch_size,
-                    "adaptive, hierarchical and clustered: patches are not split below this edge, in scene "
-                    "units (default: adaptive, each first patch's longest edge / 8; hierarchical, the largest "
-                    "base patch edge / 64; clustered, the scene's largest extent / 64)")
+        .add_option(
+            "--min-patch-size", options.min_patch_size,
+            "adaptive, hierarchical and clustered: patches are not split below this edge, in scene "
+            "units (default: adaptive, each first patch's longest edge / 8; hierarchical, the largest "
+            "base patch edge / 64; clustered, the scene's largest extent / 64)")
         ->check(positive_number());
 }
 

@@ -58,6 +58,9 @@ SavedSolution example() {
         saved.display_solution.push_back({x + 0.5, x + 0.75, x + 1e-300});
         saved.direct.push_back({x / 4.0, 0.0, x + 2.0});
     }
+    saved.display_gather.row_begin = {0, 2, 2, 3};
+    saved.display_gather.element = {0, 5, static_cast<std::uint32_t>(saved.size() - 1)};
+    saved.display_gather.weight = {0.25f, 0.5f, 1.0f};
     saved.report = {42, 3.5e-6, "iteration limit", "stopped at the step limit of 42"};
     return saved;
 }
@@ -129,6 +132,9 @@ TEST(SavedSolution, RoundTripsEveryField) {
         EXPECT_EQ(pb.patches[p].normal, pa.patches[p].normal);
     }
     EXPECT_GT(faces, 0u);  // the check above saw faces other than the first
+    EXPECT_EQ(b.display_gather.row_begin, a.display_gather.row_begin);
+    EXPECT_EQ(b.display_gather.element, a.display_gather.element);
+    EXPECT_EQ(b.display_gather.weight, a.display_gather.weight);
     EXPECT_EQ(pb.surface_begin, pa.surface_begin);
     EXPECT_EQ(pb.outline_begin, pa.outline_begin);
     EXPECT_EQ(pb.outline, pa.outline);
@@ -246,6 +252,15 @@ TEST(SavedSolution, RefusesNonFiniteValuesAndIndicesOutOfRange) {
     SavedSolution bad_face = example();
     bad_face.patches.patches[2].face = 1'000'000;
     expect_refused(encode_saved_solution(bad_face), "patch face 1000000 is out of range");
+    SavedSolution bad_element = example();
+    bad_element.display_gather.element[1] = static_cast<std::uint32_t>(bad_element.size());
+    expect_refused(encode_saved_solution(bad_element), "display gather element");
+    SavedSolution bad_offsets = example();
+    bad_offsets.display_gather.row_begin = {0, 3, 2, 3};
+    expect_refused(encode_saved_solution(bad_offsets), "the display gather's offsets are not ascending");
+    SavedSolution bad_weight = example();
+    bad_weight.display_gather.weight[2] = -1.0f;
+    expect_refused(encode_saved_solution(bad_weight), "a display gather weight is negative");
     SavedSolution bad_reflectance = example();
     bad_reflectance.scene.surfaces[0].material.reflectance.x = 1.0;
     expect_refused(encode_saved_solution(bad_reflectance), "reflectance");

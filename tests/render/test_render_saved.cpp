@@ -8,6 +8,9 @@
 #include <fstream>
 
 #include "rad/io/image_file.hpp"
+#include "rad/io/saved_solution.hpp"
+#include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/scene_loader.hpp"
 #include "test_support.hpp"
 
 namespace rad {
@@ -78,6 +81,33 @@ TEST(RenderSaved, HierarchicalCornellBoxDrawsTheSameImageFromItsSavedSolution) {
 
 TEST(RenderSaved, ClusteredCornellBoxDrawsTheSameImageFromItsSavedSolution) {
     expect_same_image_from_saved({"--subdivision", "clustered"});
+}
+
+// The file keeps the display patches' own gather, so opening it does not trace that again; the image is the
+// one the gather traced anew gives (the same seed), bit for bit.
+TEST(RenderSaved, AClusteredSolutionKeepsItsDisplayPatchesGather) {
+    test::TempDir dir;
+    const std::string kept = (dir.path() / "kept.radiosity").string();
+    ASSERT_EQ(
+        run_radiosity({"solve", "builtin:cornell", "--subdivision", "clustered", "--save", kept}).status, 0);
+    SavedSolution saved = read_saved_solution(kept);
+    const Scene scene = load_scene("builtin:cornell");
+    const std::size_t display_patches =
+        build_patches(scene, MeshingOptions{.patch_size = default_patch_size(scene)}).size();
+    ASSERT_EQ(saved.display_gather.row_begin.size(), display_patches + 1);
+    EXPECT_GT(saved.display_gather.element.size(), 100 * display_patches);  // rows of many leaves each
+    const std::string traced = (dir.path() / "traced.radiosity").string();
+    saved.display_gather = {};
+    write_saved_solution(traced, saved);
+
+    std::vector<Image> images;
+    for (const std::string& file : {kept, traced}) {
+        const std::string out = file + ".pfm";
+        const auto result = run_radiosity({"render", file, "--out", out, "--width", "96", "--height", "80"});
+        ASSERT_EQ(result.status, 0) << result.err;
+        images.push_back(read_image(out));
+    }
+    EXPECT_EQ(images[0].pixels, images[1].pixels);
 }
 
 TEST(RenderSaved, SeveralCamerasWriteSeveralImagesFromOneSolve) {

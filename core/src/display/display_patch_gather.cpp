@@ -55,6 +55,23 @@ void gather_row(const DisplayPatchGatherInput& input, std::uint32_t d, int count
     }
 }
 
+// Whether `input.traced` is a table for these display patches over these solution patches.
+bool takes_traced(const DisplayPatchGatherInput& input, std::size_t n) {
+    const DisplayMesh::PatchGather* t = input.traced;
+    if (!t || t->row_begin.size() != n + 1 || t->row_begin.front() != 0 ||
+        t->row_begin.back() != t->patch.size() || t->weight.size() != t->patch.size())
+        return false;
+    return std::all_of(t->patch.begin(), t->patch.end(),
+                       [&](std::uint32_t q) { return q < input.source.size(); });
+}
+
+// What a display patch's row is evaluated with besides the row.
+void finish(DisplayMesh::PatchGather& gather, const DisplayPatchGatherInput& input) {
+    gather.emission.assign(input.emission.begin(), input.emission.end());
+    gather.reflectance.assign(input.reflectance.begin(), input.reflectance.end());
+    gather.source.assign(input.source.begin(), input.source.end());
+}
+
 }  // namespace
 
 void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInput& input) {
@@ -66,6 +83,14 @@ void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInpu
     }
     display.patch_gather = {};
     if (n == 0) return;
+    if (takes_traced(input, n)) {
+        const DisplayMesh::PatchGather& traced = *input.traced;
+        display.patch_gather.row_begin = traced.row_begin;
+        display.patch_gather.patch = traced.patch;
+        display.patch_gather.weight = traced.weight;
+        finish(display.patch_gather, input);
+        return;
+    }
     const int count = static_cast<int>(std::min<std::size_t>(kPatchGatherRays, input.ray_budget / n));
     if (count < kPatchGatherMinRays) return;
     Progress* progress = input.progress;
@@ -85,9 +110,7 @@ void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInpu
         });
     DisplayMesh::PatchGather& gather = display.patch_gather;
     append_rows(rows, gather.row_begin, gather.patch, gather.weight);
-    gather.emission.assign(input.emission.begin(), input.emission.end());
-    gather.reflectance.assign(input.reflectance.begin(), input.reflectance.end());
-    gather.source.assign(input.source.begin(), input.source.end());
+    finish(gather, input);
 }
 
 }  // namespace rad

@@ -9,7 +9,9 @@
 //   patches:  u64 points, dvec3 each, then as many float3 positions; u64 patches (= n), u32×4 corners each;
 //             per patch u32 surface, u32 face, f64 area, dvec3 centroid, dvec3 normal; u64 + u32
 //             surface_begin; u64 + u32 outline_begin; u64 + u32 outline
-//   elements: n f64 area, n dvec3 ρ, n dvec3 E, n dvec3 solution, n dvec3 display solution
+//   elements: n f64 area, n dvec3 ρ, n dvec3 E, n dvec3 solution, n dvec3 display solution, n dvec3 ρH_d
+//   display gather: u64 + u32 row offsets (none, or display patches + 1), u64 + u32 elements, as many f32
+//             weights
 //   report:   u64 steps, f64 residual, status, status_message
 #include "rad/io/saved_solution.hpp"
 
@@ -416,6 +418,23 @@ PatchMesh read_patches(Reader& r, std::size_t elements, const Scene& scene) {
     return m;
 }
 
+SavedSolution::DisplayGather read_display_gather(Reader& r, std::size_t elements) {
+    SavedSolution::DisplayGather g;
+    g.row_begin = r.indices("display gather offset", std::numeric_limits<std::uint32_t>::max());
+    g.element = r.indices("display gather element", elements);
+    const bool ascending = g.row_begin.empty()
+                               ? g.element.empty()
+                               : g.row_begin.front() == 0 && g.row_begin.back() == g.element.size() &&
+                                     std::is_sorted(g.row_begin.begin(), g.row_begin.end());
+    if (!ascending) r.fail("the display gather's offsets are not ascending from 0 to its entries");
+    g.weight.resize(g.element.size());
+    for (float& x : g.weight) {
+        x = r.f32("display gather weight");
+        if (x < 0.0f) r.fail("a display gather weight is negative");
+    }
+    return g;
+}
+
 }  // namespace
 
 bool is_saved_solution_path(const std::filesystem::path& path) {
@@ -437,6 +456,11 @@ std::string encode_saved_solution(const SavedSolution& saved) {
         saved.solution.size() != n || saved.display_solution.size() != n || saved.direct.size() != n) {
         throw std::invalid_argument("saved solution: per-element arrays differ from the patch count");
     }
+    const SavedSolution::DisplayGather& gather = saved.display_gather;
+    if (gather.element.size() != gather.weight.size() ||
+        (!gather.empty() && gather.row_begin.back() != gather.element.size())) {
+        throw std::invalid_argument("saved solution: the display gather's table is inconsistent");
+    }
     Writer w;
     w.count(n);
     write_settings(w, saved.settings);
@@ -446,6 +470,10 @@ std::string encode_saved_solution(const SavedSolution& saved) {
     for (const auto* values :
          {&saved.reflectance, &saved.emission, &saved.solution, &saved.display_solution, &saved.direct})
         for (const glm::dvec3& v : *values) w.vec(v);
+    const SavedSolution::DisplayGather& g = saved.display_gather;
+    w.indices(g.row_begin);
+    w.indices(g.element);
+    for (float x : g.weight) w.f32(x);
     w.u64(saved.report.steps);
     w.f64(saved.report.residual);
     w.text(saved.report.status);
@@ -485,8 +513,8 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
 
     Reader r(payload, name);
     SavedSolution saved;
-    // The smallest element is 76 bytes of patch and 128 of values.
-    const std::size_t n = r.count("element count", 76 + 128);
+    // The smallest element is 80 bytes of patch and 128 of values.
+    const std::size_t n = r.count("element count", 80 + 128);
     saved.settings = read_settings(r);
     saved.scene = read_scene(r);
     saved.scene.source = saved.settings.scene_source;
@@ -515,6 +543,7 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
             if (saved.direct[i][c] < 0.0) r.fail("element " + std::to_string(i) + ": negative direct light");
         }
     }
+    saved.display_gather = read_display_gather(r, n);
     saved.report.steps = r.u64("step count");
     saved.report.residual = r.f64("residual");
     if (saved.report.residual < 0.0) r.fail("the residual is negative");

@@ -57,6 +57,16 @@ struct SavedSolution {
     std::vector<glm::dvec3> direct;                 // ρ H_d: the emitters' light reflected once
                                                     // (DisplayMesh::DirectLight::patch)
     SavedReport report;
+    // A hierarchy's display patches' own gather (DisplayMesh::PatchGather's table), so that opening the file
+    // does not trace it again; all empty where the display has none. Rows per display patch, into the
+    // elements and their weights.
+    struct DisplayGather {
+        std::vector<std::uint32_t> row_begin;
+        std::vector<std::uint32_t> element;
+        std::vector<float> weight;
+        bool empty() const { return row_begin.empty(); }
+    };
+    DisplayGather display_gather;
 
     std::size_t size() const { return patches.size(); }
 };
@@ -66,7 +76,7 @@ struct SavedSolution {
 //   24 u64 checksum: 64-bit FNV-1a of the payload
 // The payload's layout is in docs/architecture.md ("Saved solutions") and saved_solution.cpp.
 inline constexpr std::string_view kSavedSolutionMagic{"\x89RADSOL\n", 8};
-inline constexpr std::uint32_t kSavedSolutionVersion = 4;
+inline constexpr std::uint32_t kSavedSolutionVersion = 5;
 inline constexpr std::size_t kSavedSolutionHeaderBytes = 32;
 
 // Whether a scene argument names a saved solution rather than a scene: it ends in .radiosity (any case).
