@@ -233,11 +233,10 @@ int run_render(RenderOptions options, const CLI::App& command) {
     std::vector<std::string> comparisons;
     for (std::size_t k = 0; k < cameras.size(); ++k) {
         const Image image = renderer.render(cameras[k], options.width, options.height);
+        const std::string path = image_path(options.out, k, cameras.size());
         exposures[k] = options.exposure.for_image(auto_exposure(image));
-        write_image(image_path(options.out, k, cameras.size()), image, exposures[k]);
-        if (reference)
-            comparisons.push_back(
-                comparison(image_path(options.out, k, cameras.size()), image, *reference, options.compare));
+        write_image(path, image, exposures[k]);
+        if (reference) comparisons.push_back(comparison(path, image, *reference, options.compare));
     }
     const double render_seconds = render_clock.seconds();
 

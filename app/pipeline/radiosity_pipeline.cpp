@@ -156,12 +156,9 @@ SavedSolution RadiosityPipeline::saved_solution() const {
                                .reflectance = t.reflectance,
                                .emission = t.emission,
                                .direct = saved.direct};
-    DisplayMesh::PatchGather table = display_patch_gather_table(
+    saved.display_gather = display_patch_gather_table(
         loaded_.scene, solved,
         {.options = {}, .display_patch_size = display_patch_size(), .seed = options_.form_factors.seed});
-    saved.display_gather.row_begin = std::move(table.row_begin);
-    saved.display_gather.element = std::move(table.patch);
-    saved.display_gather.weight = std::move(table.weight);
     const StepReport& report = solver_->report();
     saved.report.steps = report.step;
     saved.report.residual = report.residual;
@@ -338,7 +335,6 @@ DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Prog
         return display;
     }
     std::vector<glm::dvec3> direct;
-    DisplayMesh::PatchGather traced;
     SolvedPatches solved{.mesh = &patches()};
     if (built_.transport) {
         const Transport& t = *built_.transport;
@@ -352,10 +348,7 @@ DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Prog
         solved.reflectance = saved_->reflectance;
         solved.emission = saved_->emission;
         solved.direct = saved_->direct;
-        traced.row_begin = saved_->display_gather.row_begin;
-        traced.patch = saved_->display_gather.element;
-        traced.weight = saved_->display_gather.weight;
-        if (!traced.empty()) solved.patch_gather = &traced;
+        if (!saved_->display_gather.empty()) solved.patch_gather = &saved_->display_gather;
     }
     const SolutionDisplaySettings settings{
         .options = options, .display_patch_size = display_patch_size(), .seed = options_.form_factors.seed};

@@ -142,8 +142,8 @@ DisplayMesh build_solution_display(const Scene& scene, const SolvedPatches& solv
     return display;
 }
 
-DisplayMesh::PatchGather display_patch_gather_table(const Scene& scene, const SolvedPatches& solved,
-                                                    const SolutionDisplaySettings& settings) {
+GatherTable display_patch_gather_table(const Scene& scene, const SolvedPatches& solved,
+                                       const SolutionDisplaySettings& settings) {
     if (settings.display_patch_size <= 0.0) return {};
     const RayScene solution_rays(*solved.mesh);
     const DisplayPatches own = make_display_patches(scene, *solved.mesh, solution_rays,
@@ -152,11 +152,7 @@ DisplayMesh::PatchGather display_patch_gather_table(const Scene& scene, const So
     DisplayMesh rows;  // the table alone: no geometry
     rows.patch_count = own.mesh.size();
     add_patch_gather(rows, scene, own, drawn, solved, solution_rays, settings.seed, nullptr);
-    DisplayMesh::PatchGather table;
-    table.row_begin = std::move(rows.patch_gather.row_begin);
-    table.patch = std::move(rows.patch_gather.patch);
-    table.weight = std::move(rows.patch_gather.weight);
-    return table;
+    return std::move(static_cast<GatherTable&>(rows.patch_gather));
 }
 
 }  // namespace rad

@@ -25,7 +25,7 @@ struct SolvedPatches {
     std::span<const glm::dvec3> emission{};
     std::span<const glm::dvec3> direct{};
     // The display patches' own gather as traced before (a saved solution's), or null: traced here.
-    const DisplayMesh::PatchGather* patch_gather = nullptr;
+    const GatherTable* patch_gather = nullptr;
 };
 
 struct SolutionDisplaySettings {
@@ -48,7 +48,7 @@ DisplayMesh build_solution_display(const Scene& scene, const SolvedPatches& solv
 
 // The display patches' own gather alone (its table: rows, patches and weights), for a saved solution to keep;
 // empty where the settings draw on the solution's own patches or the ray budget leaves the gather out.
-DisplayMesh::PatchGather display_patch_gather_table(const Scene& scene, const SolvedPatches& solved,
-                                                    const SolutionDisplaySettings& settings);
+GatherTable display_patch_gather_table(const Scene& scene, const SolvedPatches& solved,
+                                       const SolutionDisplaySettings& settings);
 
 }  // namespace rad

@@ -40,6 +40,13 @@ Gathered gather(std::unique_ptr<test::SolvedScene> solved, const std::vector<glm
     return g;
 }
 
+// `scene` in uniform patches of 0.1, its display gathered near surfaces only, over no emission or source.
+Gathered gathered_near_surfaces(Scene scene) {
+    auto solved = test::solve_scene(std::move(scene), Subdivision::uniform, 0.1);
+    const std::vector<glm::dvec3> zero(solved->system.patches->size(), glm::dvec3(0.0));
+    return gather(std::move(solved), zero, zero, kFinalGatherRayBudget, true);
+}
+
 std::uint32_t vertex_surface(const DisplayMesh& display, const PatchMesh& patches, std::size_t v) {
     return patches.patches[display.weight_patch[display.weight_begin[v]]].surface;
 }
@@ -93,10 +100,7 @@ TEST(FinalGather, NearSurfacesOnlyTheFloorBesideTheWallGathers) {
     // builtin:perpendicular at patch size 0.1: a floor vertex farther than two patch sizes (0.2) from the
     // wall meets nothing that near and keeps its patches; one within half a patch size of it sends half its
     // rays into the wall, most of them nearer than 0.2, and gathers with kNearGatherRays rays.
-    auto solved = test::solve_scene(make_perpendicular_squares(), Subdivision::uniform, 0.1);
-    const PatchMesh& patches = *solved->system.patches;
-    const std::vector<glm::dvec3> zero(patches.size(), glm::dvec3(0.0));
-    const Gathered g = gather(std::move(solved), zero, zero, kFinalGatherRayBudget, true);
+    const Gathered g = gathered_near_surfaces(make_perpendicular_squares());
     ASSERT_FALSE(g.display.gather.empty());
     const DisplayMesh::FinalGather& rows = g.display.gather;
     int far = 0, near = 0;
@@ -146,10 +150,7 @@ TEST(FinalGather, NearSurfacesOnlyFacesSmallerThanAPatchMakeNoVertexGather) {
             }
         }
     }
-    auto solved = test::solve_scene(builder.build(), Subdivision::uniform, 0.1);
-    const PatchMesh& patches = *solved->system.patches;
-    const std::vector<glm::dvec3> zero(patches.size(), glm::dvec3(0.0));
-    const Gathered g = gather(std::move(solved), zero, zero, kFinalGatherRayBudget, true);
+    const Gathered g = gathered_near_surfaces(builder.build());
     ASSERT_FALSE(g.display.gather.empty());
     const DisplayMesh::FinalGather& rows = g.display.gather;
     int under = 0, beside_wall = 0;

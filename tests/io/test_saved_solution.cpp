@@ -59,7 +59,7 @@ SavedSolution example() {
         saved.direct.push_back({x / 4.0, 0.0, x + 2.0});
     }
     saved.display_gather.row_begin = {0, 2, 2, 3};
-    saved.display_gather.element = {0, 5, static_cast<std::uint32_t>(saved.size() - 1)};
+    saved.display_gather.patch = {0, 5, static_cast<std::uint32_t>(saved.size() - 1)};
     saved.display_gather.weight = {0.25f, 0.5f, 1.0f};
     saved.report = {42, 3.5e-6, "iteration limit", "stopped at the step limit of 42"};
     return saved;
@@ -133,7 +133,7 @@ TEST(SavedSolution, RoundTripsEveryField) {
     }
     EXPECT_GT(faces, 0u);  // the check above saw faces other than the first
     EXPECT_EQ(b.display_gather.row_begin, a.display_gather.row_begin);
-    EXPECT_EQ(b.display_gather.element, a.display_gather.element);
+    EXPECT_EQ(b.display_gather.patch, a.display_gather.patch);
     EXPECT_EQ(b.display_gather.weight, a.display_gather.weight);
     EXPECT_EQ(pb.surface_begin, pa.surface_begin);
     EXPECT_EQ(pb.outline_begin, pa.outline_begin);
@@ -253,7 +253,7 @@ TEST(SavedSolution, RefusesNonFiniteValuesAndIndicesOutOfRange) {
     bad_face.patches.patches[2].face = 1'000'000;
     expect_refused(encode_saved_solution(bad_face), "patch face 1000000 is out of range");
     SavedSolution bad_element = example();
-    bad_element.display_gather.element[1] = static_cast<std::uint32_t>(bad_element.size());
+    bad_element.display_gather.patch[1] = static_cast<std::uint32_t>(bad_element.size());
     expect_refused(encode_saved_solution(bad_element), "display gather element");
     SavedSolution bad_offsets = example();
     bad_offsets.display_gather.row_begin = {0, 3, 2, 3};

@@ -95,7 +95,7 @@ TEST(RenderSaved, AClusteredSolutionKeepsItsDisplayPatchesGather) {
     const std::size_t display_patches =
         build_patches(scene, MeshingOptions{.patch_size = default_patch_size(scene)}).size();
     ASSERT_EQ(saved.display_gather.row_begin.size(), display_patches + 1);
-    EXPECT_GT(saved.display_gather.element.size(), 100 * display_patches);  // rows of many leaves each
+    EXPECT_GT(saved.display_gather.patch.size(), 100 * display_patches);  // rows of many leaves each
     const std::string traced = (dir.path() / "traced.radiosity").string();
     saved.display_gather = {};
     write_saved_solution(traced, saved);

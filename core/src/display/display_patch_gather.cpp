@@ -57,7 +57,7 @@ void gather_row(const DisplayPatchGatherInput& input, std::uint32_t d, int count
 
 // Whether `input.traced` is a table for these display patches over these solution patches.
 bool takes_traced(const DisplayPatchGatherInput& input, std::size_t n) {
-    const DisplayMesh::PatchGather* t = input.traced;
+    const GatherTable* t = input.traced;
     if (!t || t->row_begin.size() != n + 1 || t->row_begin.front() != 0 ||
         t->row_begin.back() != t->patch.size() || t->weight.size() != t->patch.size())
         return false;
@@ -84,10 +84,7 @@ void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInpu
     display.patch_gather = {};
     if (n == 0) return;
     if (takes_traced(input, n)) {
-        const DisplayMesh::PatchGather& traced = *input.traced;
-        display.patch_gather.row_begin = traced.row_begin;
-        display.patch_gather.patch = traced.patch;
-        display.patch_gather.weight = traced.weight;
+        static_cast<GatherTable&>(display.patch_gather) = *input.traced;
         finish(display.patch_gather, input);
         return;
     }
@@ -109,7 +106,7 @@ void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInpu
             if (progress) progress->advance(r.size());
         });
     DisplayMesh::PatchGather& gather = display.patch_gather;
-    append_rows(rows, gather.row_begin, gather.patch, gather.weight);
+    append_rows(rows, gather);
     finish(gather, input);
 }
 

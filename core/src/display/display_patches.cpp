@@ -51,10 +51,6 @@ Samples sample_points(const PatchMesh& mesh, std::size_t d) {
     return out;
 }
 
-std::uint64_t face_key(const Patch& p) {
-    return (std::uint64_t{p.surface} << 32) | p.face;
-}
-
 // The solution's patches of each input face.
 std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> patches_by_face(const PatchMesh& mesh) {
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> out;

@@ -2,8 +2,10 @@
 
 namespace rad {
 
-void append_rows(std::vector<GatherRow>& rows, std::vector<std::uint32_t>& row_begin,
-                 std::vector<std::uint32_t>& patch, std::vector<float>& weight) {
+void append_rows(std::vector<GatherRow>& rows, GatherTable& table) {
+    std::vector<std::uint32_t>& row_begin = table.row_begin;
+    std::vector<std::uint32_t>& patch = table.patch;
+    std::vector<float>& weight = table.weight;
     std::size_t entries = 0;
     for (const GatherRow& row : rows) entries += row.patch.size();
     patch.reserve(patch.size() + entries);

@@ -1,10 +1,12 @@
 #pragma once
 
-// The rows a gather traces, one per vertex or patch, and the sparse table they are kept in. Private to the
+// The rows a gather traces, one per vertex or patch, before they go into its GatherTable. Private to the
 // library.
 
 #include <cstdint>
 #include <vector>
+
+#include "rad/display/gather_table.hpp"
 
 namespace rad {
 
@@ -14,9 +16,8 @@ struct GatherRow {
     std::vector<float> weight;
 };
 
-// Appends the rows in order to a sparse table (row_begin gets one offset per row and the first 0), freeing
-// each row as it is copied, so the rows and the table are not held twice.
-void append_rows(std::vector<GatherRow>& rows, std::vector<std::uint32_t>& row_begin,
-                 std::vector<std::uint32_t>& patch, std::vector<float>& weight);
+// Appends the rows in order to the table (row_begin gets one offset per row and the first 0), freeing each
+// row as it is copied, so the rows and the table are not held twice.
+void append_rows(std::vector<GatherRow>& rows, GatherTable& table);
 
 }  // namespace rad

@@ -54,10 +54,9 @@ double vertex_patch_size(const DisplayMesh& display, const PatchMesh& patches, s
 // Per patch, the size of the input face it is part of: the square root of the face's area.
 std::vector<double> face_sizes(const PatchMesh& patches) {
     std::unordered_map<std::uint64_t, double> area;
-    const auto key = [](const Patch& p) { return (std::uint64_t{p.surface} << 32) | p.face; };
-    for (const Patch& p : patches.patches) area[key(p)] += p.area;
+    for (const Patch& p : patches.patches) area[face_key(p)] += p.area;
     std::vector<double> size(patches.size());
-    for (std::size_t q = 0; q < patches.size(); ++q) size[q] = std::sqrt(area[key(patches.patches[q])]);
+    for (std::size_t q = 0; q < patches.size(); ++q) size[q] = std::sqrt(area[face_key(patches.patches[q])]);
     return size;
 }
 
@@ -158,7 +157,7 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
                           if (progress) progress->advance(range.size());
                       });
     DisplayMesh::FinalGather& gather = display.gather;
-    append_rows(rows, gather.row_begin, gather.patch, gather.weight);
+    append_rows(rows, gather);
     gather.reflectance.resize(vertices);
     for (std::size_t v = 0; v < vertices; ++v)
         gather.reflectance[v] = vertex_reflectance(display, input.reflectance, v);

@@ -418,16 +418,16 @@ PatchMesh read_patches(Reader& r, std::size_t elements, const Scene& scene) {
     return m;
 }
 
-SavedSolution::DisplayGather read_display_gather(Reader& r, std::size_t elements) {
-    SavedSolution::DisplayGather g;
+GatherTable read_display_gather(Reader& r, std::size_t elements) {
+    GatherTable g;
     g.row_begin = r.indices("display gather offset", std::numeric_limits<std::uint32_t>::max());
-    g.element = r.indices("display gather element", elements);
+    g.patch = r.indices("display gather element", elements);
     const bool ascending = g.row_begin.empty()
-                               ? g.element.empty()
-                               : g.row_begin.front() == 0 && g.row_begin.back() == g.element.size() &&
+                               ? g.patch.empty()
+                               : g.row_begin.front() == 0 && g.row_begin.back() == g.patch.size() &&
                                      std::is_sorted(g.row_begin.begin(), g.row_begin.end());
     if (!ascending) r.fail("the display gather's offsets are not ascending from 0 to its entries");
-    g.weight.resize(g.element.size());
+    g.weight.resize(g.patch.size());
     for (float& x : g.weight) {
         x = r.f32("display gather weight");
         if (x < 0.0f) r.fail("a display gather weight is negative");
@@ -456,9 +456,9 @@ std::string encode_saved_solution(const SavedSolution& saved) {
         saved.solution.size() != n || saved.display_solution.size() != n || saved.direct.size() != n) {
         throw std::invalid_argument("saved solution: per-element arrays differ from the patch count");
     }
-    const SavedSolution::DisplayGather& gather = saved.display_gather;
-    if (gather.element.size() != gather.weight.size() ||
-        (!gather.empty() && gather.row_begin.back() != gather.element.size())) {
+    const GatherTable& gather = saved.display_gather;
+    if (gather.patch.size() != gather.weight.size() ||
+        (!gather.empty() && gather.row_begin.back() != gather.patch.size())) {
         throw std::invalid_argument("saved solution: the display gather's table is inconsistent");
     }
     Writer w;
@@ -470,9 +470,9 @@ std::string encode_saved_solution(const SavedSolution& saved) {
     for (const auto* values :
          {&saved.reflectance, &saved.emission, &saved.solution, &saved.display_solution, &saved.direct})
         for (const glm::dvec3& v : *values) w.vec(v);
-    const SavedSolution::DisplayGather& g = saved.display_gather;
+    const GatherTable& g = saved.display_gather;
     w.indices(g.row_begin);
-    w.indices(g.element);
+    w.indices(g.patch);
     for (float x : g.weight) w.f32(x);
     w.u64(saved.report.steps);
     w.f64(saved.report.residual);

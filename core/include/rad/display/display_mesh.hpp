@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rad/display/display_patches.hpp"
+#include "rad/display/gather_table.hpp"
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/texture.hpp"
 
@@ -125,28 +126,22 @@ struct DisplayMesh {
     // direct light, plus its reflectance times Σ weight · (B − source) over its row's patches: the last
     // bounce resolved at the vertex, not the patch. Vertices without a row (textured ones) show the
     // reconstruction as before.
-    struct FinalGather {
-        std::vector<std::uint32_t> row_begin;  // per vertex + 1, into patch and weight; empty: no gather
-        std::vector<std::uint32_t> patch;
-        std::vector<float> weight;            // the share of the vertex's rays that met the patch's front
+    // Its table has a row per vertex: the share of the vertex's rays that met each patch's front.
+    struct FinalGather : GatherTable {
         std::vector<glm::dvec3> reflectance;  // per vertex
         std::vector<glm::dvec3> emission;     // per patch, what the patch's radiosity starts from
         std::vector<glm::dvec3> source;       // per patch, what the vertices' direct light already holds
-        bool empty() const { return row_begin.empty(); }
     };
     FinalGather gather;
     // Where the display is drawn on patches of its own, the last bounce of each of them gathered from the
     // solution's patches by rays (add_display_patch_gather), or all empty. A display patch then shows
     // emission + s · direct.patch + reflectance · Σ weight · (B − source) over the solution's patches its
     // rays met (s as for the vertices), in place of the mean of the solution's patches under it.
-    struct PatchGather {
-        std::vector<std::uint32_t> row_begin;  // per display patch + 1, into patch and weight
-        std::vector<std::uint32_t> patch;      // the solution's
-        std::vector<float> weight;
+    // Its table has a row per display patch, over the solution's patches.
+    struct PatchGather : GatherTable {
         std::vector<glm::dvec3> emission;     // per display patch
         std::vector<glm::dvec3> reflectance;  // per display patch
         std::vector<glm::dvec3> source;       // per solution patch
-        bool empty() const { return row_begin.empty(); }
     };
     PatchGather patch_gather;
 

@@ -34,7 +34,7 @@ struct DisplayPatchGatherInput {
     Progress* progress = nullptr;  // advanced per display patch; its cancel throws Cancelled
     // A table these rays made before (a saved solution's), taken instead of tracing when it has a row per
     // display patch and its patches are the solution's (below source.size()); null: trace.
-    const DisplayMesh::PatchGather* traced = nullptr;
+    const GatherTable* traced = nullptr;
 };
 
 // Fills display.patch_gather: the last bounce of each display patch, gathered from the solution's patches by

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "rad/display/gather_table.hpp"
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/scene.hpp"
 
@@ -57,16 +58,9 @@ struct SavedSolution {
     std::vector<glm::dvec3> direct;                 // ρ H_d: the emitters' light reflected once
                                                     // (DisplayMesh::DirectLight::patch)
     SavedReport report;
-    // A hierarchy's display patches' own gather (DisplayMesh::PatchGather's table), so that opening the file
-    // does not trace it again; all empty where the display has none. Rows per display patch, into the
-    // elements and their weights.
-    struct DisplayGather {
-        std::vector<std::uint32_t> row_begin;
-        std::vector<std::uint32_t> element;
-        std::vector<float> weight;
-        bool empty() const { return row_begin.empty(); }
-    };
-    DisplayGather display_gather;
+    // A hierarchy's display patches' own gather (DisplayMesh::PatchGather's table: a row per display patch,
+    // over the elements), so that opening the file does not trace it again; empty where the display has none.
+    GatherTable display_gather;
 
     std::size_t size() const { return patches.size(); }
 };

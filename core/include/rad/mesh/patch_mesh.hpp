@@ -19,6 +19,11 @@ struct Patch {
     glm::dvec3 normal{0.0};  // unit, front side
 };
 
+// The input face a patch is part of (its surface and its face) as one key, to group patches by face.
+inline std::uint64_t face_key(const Patch& p) {
+    return (std::uint64_t{p.surface} << 32) | p.face;
+}
+
 // The scene cut into patches (quads where possible, else triangles), each no longer than the patch size on
 // any edge. Within a surface build_patches makes a conforming mesh: corners are shared and no corner lies
 // inside another patch's edge (an ElementTree's leaves may have T-vertices; see `outline`). Surfaces share no
