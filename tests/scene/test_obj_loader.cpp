@@ -249,6 +249,29 @@ TEST(ObjLoader, SloppyFilesLoadWithOneWarningPerKind) {
     EXPECT_TRUE(warning_with(scene, "dropped 2 duplicate face(s)"));
 }
 
+// A lamp written twice, in two objects and from another first corner, as exporters write them: the copy is
+// dropped before coplanar faces are lifted (which would otherwise keep both, one in front of the other, and
+// the lamp would emit twice).
+TEST(ObjLoader, ALampWrittenTwiceInTwoObjectsEmitsOnce) {
+    TempDir dir;
+    dir.write("m.mtl", "newmtl lamp\nKd 0 0 0\nKe 1 1 1\nnewmtl white\nKd 0.5 0.5 0.5\n");
+    const Scene scene =
+        load_obj(dir.write("s.obj",
+                           "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                           "o lamp\nusemtl lamp\nf 1 2 3 4\no lamp_copy\nusemtl lamp\nf 3 4 1 2\n"
+                           "o other\nusemtl white\nf 4 1 2 3\n"));
+    double emitting_area = 0.0;
+    std::size_t faces = 0;
+    for (const Surface& surface : scene.surfaces) {
+        faces += surface.mesh.n_faces();
+        if (surface.material.emits()) emitting_area += surface_area(surface.mesh);
+    }
+    EXPECT_EQ(faces, 1u);
+    EXPECT_DOUBLE_EQ(emitting_area, 1.0);
+    EXPECT_TRUE(warning_with(scene, "dropped 2 duplicate face(s)"));
+    EXPECT_FALSE(warning_with(scene, "lies in the plane of"));
+}
+
 // A reflectance far above 1 looks like colours written from 0 to 255: the warning says so.
 TEST(ObjLoader, ReflectanceOf255AsksAboutTheScale) {
     TempDir dir;

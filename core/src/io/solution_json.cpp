@@ -100,15 +100,23 @@ void write_solution_json(const std::string& path, const Scene& scene, const Patc
     if (patches.size() != transport.size() || radiosity.size() != transport.size()) {
         throw std::invalid_argument("solution JSON: patches, transport and radiosity differ in size");
     }
-    json document;
-    json& patch_list = document["patches"] = json::array();
-    for (std::size_t i = 0; i < patches.size(); ++i) {
-        patch_list.push_back(patch_json(scene, patches, transport, radiosity, i));
-    }
-    document["stats"] = stats_json(transport, stats);
     if (!std::isfinite(stats.residual))
         throw std::invalid_argument("solution JSON: the residual is not finite");
-    write_file_atomically(path, document.dump() + "\n");
+    const std::string stats_text = stats_json(transport, stats).dump();
+    // Streamed a patch at a time: a document of a million patches built in memory first would cost more
+    // than the solve's own peak.
+    replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) throw std::runtime_error("cannot create " + temporary.string());
+        out << "{\"patches\":[";
+        for (std::size_t i = 0; i < patches.size(); ++i) {
+            if (i > 0) out << ',';
+            out << patch_json(scene, patches, transport, radiosity, i).dump();
+        }
+        out << "],\"stats\":" << stats_text << "}\n";
+        out.flush();
+        if (!out) throw std::runtime_error("cannot write " + temporary.string());
+    });
 }
 
 }  // namespace rad

@@ -10,6 +10,8 @@
 #include "rad/geometry/polygon.hpp"
 #include "rad/util/error.hpp"
 #include "scene/coplanar_faces.hpp"
+#include "scene/solid_cuts.hpp"
+#include "scene/soup_corners.hpp"
 
 namespace rad {
 
@@ -81,51 +83,6 @@ class SurfaceBuilder {
     std::unordered_map<std::uint32_t, SurfaceMesh::VertexHandle> shared_;
 };
 
-// Which of a polygon's corners remain once repeated consecutive ones (same index or same position, as in
-// "f 1 2 2 3") are dropped: positions in its vertex list.
-std::vector<std::size_t> distinct_corners(const PolygonSoup& soup, const std::vector<std::uint32_t>& in) {
-    std::vector<std::size_t> out;
-    out.reserve(in.size());
-    for (std::size_t k = 0; k < in.size(); ++k) {
-        if (!out.empty() && soup.positions[in[out.back()]] == soup.positions[in[k]]) continue;
-        out.push_back(k);
-    }
-    while (out.size() > 1 && soup.positions[in[out.front()]] == soup.positions[in[out.back()]])
-        out.pop_back();
-    return out;
-}
-
-std::vector<std::uint32_t> without_repeats(const PolygonSoup& soup, const std::vector<std::uint32_t>& in) {
-    std::vector<std::uint32_t> out;
-    for (std::size_t k : distinct_corners(soup, in)) out.push_back(in[k]);
-    return out;
-}
-
-// A polygon's distinct corners and their texture coordinates (empty where it has none).
-struct Corners {
-    std::vector<std::uint32_t> vertices;
-    std::vector<glm::dvec2> uv;
-};
-
-Corners polygon_corners(const PolygonSoup& soup, const PolygonSoup::Polygon& p) {
-    Corners c;
-    const bool has_uv = p.texcoords.size() == p.vertices.size() &&
-                        std::all_of(p.texcoords.begin(), p.texcoords.end(),
-                                    [&](std::uint32_t t) { return t < soup.texcoords.size(); });
-    for (std::size_t k : distinct_corners(soup, p.vertices)) {
-        c.vertices.push_back(p.vertices[k]);
-        if (has_uv) c.uv.push_back(soup.texcoords[p.texcoords[k]]);
-    }
-    return c;
-}
-
-std::vector<glm::dvec3> corner_positions(const PolygonSoup& soup, const std::vector<std::uint32_t>& idx) {
-    std::vector<glm::dvec3> out;
-    out.reserve(idx.size());
-    for (std::uint32_t v : idx) out.push_back(soup.positions[v]);
-    return out;
-}
-
 // A polygon's corners from its lexicographically smallest position on, in its winding: two polygons with
 // the same corners in the same turning order have the same key, whatever corner they start from.
 std::vector<glm::dvec3> rotated_to_smallest(std::vector<glm::dvec3> points) {
@@ -177,15 +134,43 @@ double scene_size_squared(const PolygonSoup& soup) {
     return d * d;
 }
 
+std::vector<glm::dvec3> polygon_points(const PolygonSoup& soup, std::uint32_t index) {
+    return corner_positions(soup, without_repeats(soup, soup.polygons[index].vertices));
+}
+
+// The soup without the polygons that repeat an earlier one (with area), and their count; nothing when none
+// does. Done before coplanar faces are lifted: two copies in different groups would otherwise be taken for a
+// rug on a floor, one moved in front of the other, and both would stay (a duplicated lamp emitting twice).
+std::optional<PolygonSoup> without_duplicate_faces(const PolygonSoup& soup, double min_area,
+                                                   std::size_t& duplicates) {
+    DuplicateFaces seen(soup);
+    std::vector<bool> repeat(soup.polygons.size(), false);
+    duplicates = 0;
+    for (std::size_t index = 0; index < soup.polygons.size(); ++index) {
+        const std::vector<glm::dvec3> points = polygon_points(soup, static_cast<std::uint32_t>(index));
+        if (points.size() < 3 || !(polygon_area(points) > min_area)) continue;
+        if (seen.seen_before(index, points)) {
+            repeat[index] = true;
+            ++duplicates;
+        }
+    }
+    if (duplicates == 0) return std::nullopt;
+    PolygonSoup out;
+    out.source = soup.source;
+    out.positions = soup.positions;
+    out.texcoords = soup.texcoords;
+    out.groups = soup.groups;
+    out.polygons.reserve(soup.polygons.size() - duplicates);
+    for (std::size_t index = 0; index < soup.polygons.size(); ++index)
+        if (!repeat[index]) out.polygons.push_back(soup.polygons[index]);
+    return out;
+}
+
 // A polygon of the soup that has area and repeats no earlier one.
 struct KeptPolygon {
     std::uint32_t index = 0;  // into soup.polygons
     bool paired = false;      // a later or earlier kept polygon is its back: the same corners, reversed
 };
-
-std::vector<glm::dvec3> polygon_points(const PolygonSoup& soup, std::uint32_t index) {
-    return corner_positions(soup, without_repeats(soup, soup.polygons[index].vertices));
-}
 
 // Pairs the kept polygons that lie back to back (a real file's way of building a two-sided part, such as a
 // lamp shade or a curtain) and returns the number of pairs.
@@ -254,20 +239,22 @@ void add_surface(Scene& scene, const PolygonSoup::Group& group, SurfaceBuilder& 
 }  // namespace
 
 Scene build_scene(const PolygonSoup& input) {
+    const double min_area = kZeroAreaFraction * scene_size_squared(input);
+    std::size_t duplicates = 0;
+    const std::optional<PolygonSoup> unique = without_duplicate_faces(input, min_area, duplicates);
+    // Solids are found before coplanar faces are lifted, which would open them.
     std::vector<std::string> lift_warnings;
-    const std::optional<PolygonSoup> lifted = lift_coplanar_faces(input, lift_warnings);
-    const PolygonSoup& soup = lifted ? *lifted : input;
-    const double min_area = kZeroAreaFraction * scene_size_squared(soup);
-    std::size_t dropped = 0, duplicates = 0;
-    DuplicateFaces seen(soup);
+    const std::optional<PolygonSoup> cut = cut_faces_at_solids(unique ? *unique : input, lift_warnings);
+    const PolygonSoup& uncut = cut ? *cut : unique ? *unique : input;
+    const std::optional<PolygonSoup> lifted = lift_coplanar_faces(uncut, lift_warnings);
+    const PolygonSoup& soup = lifted ? *lifted : uncut;
+    std::size_t dropped = 0;
     std::vector<KeptPolygon> kept;
 
     for (std::size_t index = 0; index < soup.polygons.size(); ++index) {
         const std::vector<glm::dvec3> points = polygon_points(soup, static_cast<std::uint32_t>(index));
         if (points.size() < 3 || !(polygon_area(points) > min_area)) {
             ++dropped;
-        } else if (seen.seen_before(index, points)) {
-            ++duplicates;
         } else {
             kept.push_back({static_cast<std::uint32_t>(index)});
         }
@@ -302,7 +289,7 @@ Scene build_scene(const PolygonSoup& input) {
     if (duplicates > 0) {
         scene.warnings.push_back(
             soup.source + ": dropped " + std::to_string(duplicates) +
-            " duplicate face(s) (the same corners as an earlier face, in the same order)");
+            " duplicate face(s) (the same corners as an earlier face, in the same cyclic order)");
     }
     if (pairs > 0) {
         scene.warnings.push_back(soup.source + ": " + std::to_string(pairs) +
