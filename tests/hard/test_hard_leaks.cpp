@@ -81,8 +81,7 @@ Scene leak_scene(const LeakCase& c) {
 
 class LeakSuite : public ::testing::TestWithParam<Subdivision> {};
 
-// At most 1e-6 of the light outside reaches the interior (rounding). Clustering is not yet among them: its
-// links between clusters carry light to every child that faces the source, seen or not (docs/hard-cases.md).
+// At most 1e-6 of the light outside reaches the interior (rounding).
 TEST_P(LeakSuite, NoLightReachesAClosedInterior) {
     for (const LeakCase& c : leak_cases()) {
         const auto s = test::solve_scene(leak_scene(c), GetParam());
@@ -97,7 +96,7 @@ TEST_P(LeakSuite, NoLightReachesAClosedInterior) {
 
 INSTANTIATE_TEST_SUITE_P(EverySubdivision, LeakSuite,
                          ::testing::Values(Subdivision::uniform, Subdivision::adaptive,
-                                           Subdivision::hierarchical));
+                                           Subdivision::hierarchical, Subdivision::clustered));
 
 // Parts of faces inside another solid are cut off and dropped: the floor under the four wall slabs, the
 // legs' stretch inside the floor slab, the beam's inside the wall. What stays is the area outside.
