@@ -29,21 +29,9 @@ glm::dvec3 taken_by(const DirectionalIrradiance& h, const glm::dvec3& n) {
     return sum;
 }
 
-// What a link's source sends: an element its radiosity, a cluster that of its surfaces facing the receiver.
-glm::dvec3 value_of(const ClusterHierarchy& h, const NodeValues& v, const ClusterLink& link) {
-    const std::uint32_t i = ClusterNode::index(link.source);
-    if (!ClusterNode::is_cluster(link.source)) return v.element[i];
-    if (h.isotropic) return v.cluster[i];
-    const std::array<double, 6> w = facing_weights(h.clusters[i], link.direction);
-    glm::dvec3 sum(0.0);
-    for (int k = 0; k < 6; ++k) sum += w[k] * v.cluster_facing[i][k];
-    return sum;
-}
-
-// A surface's share of its area projected on each axis direction.
-std::array<double, 6> axis_shares(const glm::dvec3& n) {
-    return {std::max(0.0, n.x),  std::max(0.0, -n.x), std::max(0.0, n.y),
-            std::max(0.0, -n.y), std::max(0.0, n.z),  std::max(0.0, -n.z)};
+const glm::dvec3& value_of(const NodeValues& v, std::uint32_t node) {
+    return ClusterNode::is_cluster(node) ? v.cluster[ClusterNode::index(node)]
+                                         : v.element[ClusterNode::index(node)];
 }
 
 // The area the pull divides an inner element's children by.
@@ -53,43 +41,7 @@ double children_area(const ElementTree& tree, const Element& element) {
     return area;
 }
 
-// The clusters' facing values from the elements' radiosity (b.element, already pulled).
-void pull_facing(const ClusterHierarchy& h, NodeValues& b) {
-    b.cluster_facing.assign(h.clusters.size(), FacingValues{});
-    for (std::size_t c = h.clusters.size(); c-- > 0;) {
-        const ClusterHierarchy::Cluster& cluster = h.clusters[c];
-        FacingValues power{};
-        if (cluster.child_count > 0) {
-            for (std::uint32_t k = 0; k < cluster.child_count; ++k) {
-                const ClusterHierarchy::Cluster& child = h.clusters[cluster.first_child + k];
-                for (int d = 0; d < 6; ++d)
-                    power[d] += child.facing[d] * b.cluster_facing[cluster.first_child + k][d];
-            }
-        } else {
-            for (std::uint32_t k = cluster.patch_begin; k < cluster.patch_end; ++k) {
-                const Element& patch = h.tree[h.patch_order[k]];
-                const std::array<double, 6> share = axis_shares(patch.shape.normal);
-                for (int d = 0; d < 6; ++d)
-                    power[d] += patch.shape.area * share[d] * b.element[h.patch_order[k]];
-            }
-        }
-        for (int d = 0; d < 6; ++d)
-            b.cluster_facing[c][d] = cluster.facing[d] > 0.0 ? power[d] / cluster.facing[d] : glm::dvec3(0.0);
-    }
-}
-
 }  // namespace
-
-std::array<double, 6> facing_weights(const ClusterHierarchy::Cluster& cluster, const glm::vec3& direction) {
-    // The surfaces that face the receiver face against `direction`.
-    const std::array<double, 6> towards = axis_shares(-glm::dvec3(direction));
-    std::array<double, 6> w{};
-    double total = 0.0;
-    for (int k = 0; k < 6; ++k) total += w[k] = towards[k] * cluster.facing[k];
-    if (!(total > 0.0)) return {};
-    for (double& x : w) x /= total;
-    return w;
-}
 
 void pull(const ClusterHierarchy& h, std::span<const glm::dvec3> leaf_values, NodeValues& b) {
     b.element.assign(h.tree.size(), glm::dvec3(0.0));
@@ -116,7 +68,6 @@ void pull(const ClusterHierarchy& h, std::span<const glm::dvec3> leaf_values, No
         }
         b.cluster[c] = cluster.area > 0.0 ? sum / cluster.area : glm::dvec3(0.0);
     }
-    if (!h.isotropic) pull_facing(h, b);
 }
 
 void gather_push(const ClusterHierarchy& h, const NodeValues& b, Irradiance& irradiance) {
@@ -131,7 +82,7 @@ void gather_push(const ClusterHierarchy& h, const NodeValues& b, Irradiance& irr
                     DirectionalIrradiance sum{};
                     for (std::uint32_t l = h.receiver_runs[k]; l < h.receiver_runs[k + 1]; ++l) {
                         const glm::dvec3 value =
-                            static_cast<double>(h.links[l].factor) * value_of(h, b, h.links[l]);
+                            static_cast<double>(h.links[l].factor) * value_of(b, h.links[l].source);
                         if (h.isotropic) {
                             sum[kIsotropicSlot] += value;
                         } else {
@@ -142,7 +93,7 @@ void gather_push(const ClusterHierarchy& h, const NodeValues& b, Irradiance& irr
                 } else {
                     glm::dvec3 sum(0.0);
                     for (std::uint32_t l = h.receiver_runs[k]; l < h.receiver_runs[k + 1]; ++l)
-                        sum += static_cast<double>(h.links[l].factor) * value_of(h, b, h.links[l]);
+                        sum += static_cast<double>(h.links[l].factor) * value_of(b, h.links[l].source);
                     irradiance.element[receiver] = sum;
                 }
             }
@@ -219,8 +170,6 @@ void spread(const ClusterHierarchy& h, std::span<const double> weights, std::spa
     }
     // The links, transposed: each source collects what its receivers take of it.
     std::vector<double> sent_element(h.tree.size(), 0.0), sent_cluster(h.clusters.size(), 0.0);
-    std::vector<std::array<double, 6>> sent_facing(h.isotropic ? 0 : h.clusters.size(),
-                                                   std::array<double, 6>{});
     for (const ClusterLink& link : h.links) {
         const std::uint32_t r = ClusterNode::index(link.receiver);
         double taken = 0.0;
@@ -234,34 +183,8 @@ void spread(const ClusterHierarchy& h, std::span<const double> weights, std::spa
             taken = received[r];
         }
         const std::uint32_t s = ClusterNode::index(link.source);
-        const double value = static_cast<double>(link.factor) * taken;
-        if (!ClusterNode::is_cluster(link.source)) {
-            sent_element[s] += value;
-        } else if (h.isotropic) {
-            sent_cluster[s] += value;
-        } else {
-            const std::array<double, 6> w = facing_weights(h.clusters[s], link.direction);
-            for (int k = 0; k < 6; ++k) sent_facing[s][k] += value * w[k];
-        }
-    }
-    // Pull of the facing values, transposed: down by each direction's projected area.
-    for (std::size_t c = 0; c < sent_facing.size(); ++c) {
-        const ClusterHierarchy::Cluster& cluster = h.clusters[c];
-        for (int k = 0; k < 6; ++k) {
-            if (!(cluster.facing[k] > 0.0)) continue;
-            const double per_area = sent_facing[c][k] / cluster.facing[k];
-            if (cluster.child_count > 0) {
-                for (std::uint32_t j = 0; j < cluster.child_count; ++j)
-                    sent_facing[cluster.first_child + j][k] +=
-                        per_area * h.clusters[cluster.first_child + j].facing[k];
-                continue;
-            }
-            for (std::uint32_t j = cluster.patch_begin; j < cluster.patch_end; ++j) {
-                const Element& patch = h.tree[h.patch_order[j]];
-                sent_element[h.patch_order[j]] +=
-                    per_area * patch.shape.area * axis_shares(patch.shape.normal)[k];
-            }
-        }
+        (ClusterNode::is_cluster(link.source) ? sent_cluster[s] : sent_element[s]) +=
+            static_cast<double>(link.factor) * taken;
     }
     // Pull, transposed: a node's share goes down to its parts by their areas.
     for (std::size_t c = 0; c < h.clusters.size(); ++c) {

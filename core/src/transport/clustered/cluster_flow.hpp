@@ -13,15 +13,10 @@
 namespace rad {
 
 // Per element and per cluster, the mean radiosity over its area, from the leaves' (children come after
-// their parents in both trees); and per cluster, the mean radiosity of its surfaces facing each axis
-// direction (+x, −x, +y, −y, +z, −z), weighted by their area projected on it. A cluster sends towards a
-// receiver the radiosity of the surfaces that face it: the mean of a wall slab's bright outside and dark
-// inside would carry outside light in.
-using FacingValues = std::array<glm::dvec3, 6>;
+// their parents in both trees).
 struct NodeValues {
     std::vector<glm::dvec3> element;
     std::vector<glm::dvec3> cluster;
-    std::vector<FacingValues> cluster_facing;
 };
 
 // What a cluster receives, by the direction it comes from: per axis direction (+x, −x, +y, −y, +z, −z),
@@ -36,10 +31,6 @@ struct Irradiance {
 };
 
 // Leaf values (in h.leaves order) averaged up both trees.
-// The weights of a cluster's facing values in the radiosity it sends along `direction` (from the receiver
-// to it): by the area each direction's surfaces present towards the receiver.
-std::array<double, 6> facing_weights(const ClusterHierarchy::Cluster& cluster, const glm::vec3& direction);
-
 void pull(const ClusterHierarchy& h, std::span<const glm::dvec3> leaf_values, NodeValues& b);
 
 // Irradiance gathered along the links into each receiver, then pushed down: a cluster's to its children

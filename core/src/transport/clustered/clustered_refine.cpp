@@ -254,38 +254,23 @@ class Refiner {
         return sum / static_cast<double>(rays.size());
     }
 
-    // Whether a surface of normal n faces along d: strictly, as two coplanar surfaces (a floor slab's side
-    // and the wall slab's outside above it) exchange no light, whatever the rounding of their points.
-    static bool faces(const glm::dvec3& n, const glm::dvec3& d) {
-        return glm::dot(n, d) > 1e-9 * glm::length(d);
-    }
-
     // The share of shadow rays between random points of the two that nothing blocks (the rays are left in
     // `buffer`, which must come empty).
     double visibility(std::uint32_t r, std::uint32_t s, const glm::dvec3& towards, std::vector<Ray>& buffer,
                       std::vector<std::uint8_t>& blocked) const {
         const int n = std::max(1, options_.visibility_rays);
         RandomStream random(options_.seed, r, s);
-        // Rays from a cluster's surface that faces away from the other end's point.
-        std::vector<std::size_t> away;
         for (int k = 0; k < n; ++k) {
             glm::dvec3 from, from_normal, to, to_normal;
             sample_node(h_, area_prefix_, r, towards, random, from, from_normal);
             sample_node(h_, area_prefix_, s, -towards, random, to, to_normal);
-            const bool from_faces = faces(from_normal, to - from);
-            const bool to_faces = faces(to_normal, from - to);
-            if ((ClusterNode::is_cluster(r) && !from_faces) || (ClusterNode::is_cluster(s) && !to_faces))
-                away.push_back(buffer.size());
             // Each end leaves its surface on the side that faces the other.
-            from += offset_ * (from_faces ? from_normal : -from_normal);
-            to += offset_ * (to_faces ? to_normal : -to_normal);
+            from += offset_ * (glm::dot(from_normal, to - from) >= 0.0 ? from_normal : -from_normal);
+            to += offset_ * (glm::dot(to_normal, from - to) >= 0.0 ? to_normal : -to_normal);
             buffer.push_back(Ray{from, 0.0f, to - from, 1.0f});
         }
         blocked.resize(buffer.size());
         rays_.occluded(buffer, blocked);
-        // A cluster's surface sends nothing to a point it faces away from or has in its plane: from behind
-        // it the ray would start inside a solid whose inner faces the scene's cuts removed, and cross it.
-        for (std::size_t k : away) blocked[k] = 1;
         const auto open = std::count(blocked.begin(), blocked.end(), std::uint8_t{0});
         return static_cast<double>(open) / static_cast<double>(buffer.size());
     }
