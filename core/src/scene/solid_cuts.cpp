@@ -55,11 +55,10 @@ std::vector<std::vector<glm::dvec3>> convex_parts(const std::vector<glm::dvec3>&
     return out;
 }
 
-// What a face becomes: its convex pieces, the solids whose faces came near it, and whether any cut it.
+// What a face becomes: its convex pieces and the solids whose faces came near it.
 struct FacePieces {
     std::vector<std::vector<glm::dvec3>> pieces;
     std::vector<std::uint32_t> solids;
-    bool split = false;
 };
 
 class SolidCutter {
@@ -139,7 +138,6 @@ class SolidCutter {
                 next.push_back(std::move(piece));  // no overlap, or the piece lies wholly on the solid
                 continue;
             }
-            face.split = true;
             for (auto& o : outside) next.push_back(std::move(o));
             next.push_back(std::move(rest));
         }
@@ -159,8 +157,7 @@ class SolidCutter {
                 std::min(g_hi, p_hi) - std::max(g_lo, p_lo) > tolerance_) {
                 ConvexSplit split = split_convex(piece, pg.normal, pg.offset, tolerance_);
                 if (!split.front.empty() && !split.back.empty()) {
-                    face.split = true;
-                    next.push_back(std::move(split.front));
+                            next.push_back(std::move(split.front));
                     next.push_back(std::move(split.back));
                     continue;
                 }
@@ -318,7 +315,8 @@ std::optional<PolygonSoup> cut_faces_at_solids(const PolygonSoup& soup, std::vec
     std::size_t cut = 0, dropped = 0;
     for (auto& [f, face] : faces) {
         std::vector<bool> keep(face.pieces.size(), true);
-        bool changed = face.split;
+        // A face is cut only where a part of it is dropped: pieces that all stay are the face, whole.
+        bool changed = false;
         for (std::size_t k = 0; k < face.pieces.size(); ++k) {
             keep[k] =
                 polygon_area(face.pieces[k]) > cutter.sliver() && !cutter.inside(f, face, face.pieces[k]);
