@@ -157,7 +157,7 @@ class SolidCutter {
                 std::min(g_hi, p_hi) - std::max(g_lo, p_lo) > tolerance_) {
                 ConvexSplit split = split_convex(piece, pg.normal, pg.offset, tolerance_);
                 if (!split.front.empty() && !split.back.empty()) {
-                            next.push_back(std::move(split.front));
+                    next.push_back(std::move(split.front));
                     next.push_back(std::move(split.back));
                     continue;
                 }
