@@ -12,6 +12,7 @@
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/polygon_soup.hpp"
 #include "rad/scene/scene_loader.hpp"
+#include "rad/transport/transport.hpp"
 #include "solved_scene.hpp"
 
 namespace rad {
@@ -93,9 +94,19 @@ TEST_P(LeakSuite, NoLightReachesAClosedInterior) {
     for (const LeakCase& c : leak_cases()) {
         Scene scene = leak_scene(c);
         const double size = base_patch_size(scene, GetParam());
-        const auto s = test::solve_scene(std::move(scene), GetParam(), size);
+        // As the program sets them: the lamps' light aimed at by shadow rays.
+        TransportSettings settings;
+        settings.subdivision = GetParam();
+        settings.form_factors.emitting_surfaces = emitting_surfaces(scene);
+        settings.form_factors.emitted_luminance =
+            emitted_luminance(scene, settings.form_factors.emitting_surfaces);
+        const auto s = test::solve_scene(std::move(scene), settings, size);
         const Leak leak = measure(*s, c.dark);
         const bool open = GetParam() == Subdivision::clustered && c.name == "leak_two_rooms";
+        // Energy balances: what the lamp and the sky bring is absorbed or escapes.
+        const EnergyBalance e = energy_balance(*s->system.transport, s->radiosity);
+        EXPECT_NEAR(e.absorbed.y + e.escaped.y, e.emitted.y + e.outside.y, 5e-3 * (e.emitted.y + e.outside.y))
+            << c.name;
         EXPECT_GE(leak.inside, 6u) << c.name;
         EXPECT_GT(leak.lit_mean, 0.0) << c.name;
         EXPECT_LE(leak.worst_inside, (open ? 1e-3 : 1e-6) * leak.lit_mean)

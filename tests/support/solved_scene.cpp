@@ -6,12 +6,16 @@ namespace rad::test {
 
 std::unique_ptr<SolvedScene> solve_scene(Scene scene, Subdivision subdivision, double patch_size,
                                          std::uint64_t seed) {
-    auto s = std::make_unique<SolvedScene>();
-    s->scene = std::move(scene);
-    s->patches = build_patches(s->scene, MeshingOptions{.patch_size = patch_size});
     TransportSettings settings;
     settings.subdivision = subdivision;
     settings.form_factors.seed = seed;
+    return solve_scene(std::move(scene), settings, patch_size);
+}
+
+std::unique_ptr<SolvedScene> solve_scene(Scene scene, const TransportSettings& settings, double patch_size) {
+    auto s = std::make_unique<SolvedScene>();
+    s->scene = std::move(scene);
+    s->patches = build_patches(s->scene, MeshingOptions{.patch_size = patch_size});
     s->system = build_scene_transport(s->scene, s->patches, settings);
     SolverOptions options;
     options.tolerance = 1e-7;

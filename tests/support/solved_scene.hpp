@@ -22,5 +22,8 @@ struct SolvedScene {
 // patch_size 0 takes the scene's default; seed is the form factors'.
 std::unique_ptr<SolvedScene> solve_scene(Scene scene, Subdivision subdivision, double patch_size = 0.0,
                                          std::uint64_t seed = 1);
+// The same with all the transport's settings given.
+std::unique_ptr<SolvedScene> solve_scene(Scene scene, const TransportSettings& settings,
+                                         double patch_size = 0.0);
 
 }  // namespace rad::test
