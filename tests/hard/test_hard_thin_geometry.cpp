@@ -3,6 +3,7 @@
 // negative radiosity, and an error bounded by the estimator's usual one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <span>
@@ -12,10 +13,12 @@
 #include "form_factor_test_scenes.hpp"
 #include "geometry/quadrature.hpp"
 #include "rad/geometry/point_polygon_factor.hpp"
+#include "rad/scene/builtin_scenes.hpp"
 #include "rad/scene/scene_loader.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/uniform/form_factors.hpp"
 #include "rad/transport/uniform/uniform_transport.hpp"
+#include "solved_scene.hpp"
 #include "solver_test_systems.hpp"
 
 namespace rad {
@@ -204,6 +207,23 @@ TEST_P(Lopsided, ATinyPatchBesideAHugeOneGetsItsDirectLight) {
 INSTANTIATE_TEST_SUITE_P(Estimators, Lopsided,
                          ::testing::Values(FormFactorMethod::hemisphere, FormFactorMethod::analytic),
                          [](const auto& info) { return method_name(info.param); });
+
+// A furnace of UV spheres whose poles are fans of thin triangles (64 segments: 5.6° wide at the pole, 70
+// times as long as wide there), every face ρ = 0.5 and E = 1, so B = E / (1 − ρ) = 2 on every element under
+// clustering (what scenes of many faces get).
+TEST(Slivers, AFurnaceOfUvSpheresIsRightOnEveryElement) {
+    SphereRoom room;
+    room.segments = 64;
+    room.triangles = true;
+    room.shared_corners = true;
+    room.spheres = 2;
+    room.balls = 2;
+    room.source = "uv-sphere furnace";
+    const auto s = test::solve_scene(make_sphere_room(room), Subdivision::clustered);
+    double worst = 0.0;
+    for (const glm::dvec3& b : s->radiosity) worst = std::max(worst, std::abs(b.x - 2.0) / 2.0);
+    EXPECT_LT(worst, 0.01);
+}
 
 }  // namespace
 }  // namespace rad
