@@ -35,7 +35,9 @@ struct PolygonSoup {
 };
 
 // Surfaces from the groups' faces. Zero-area polygons and repeats of an earlier polygon (the same corners in
-// the same winding) are dropped, each kind counted in a warning; polygons that are not planar and convex are
+// the same cyclic order, from any corner, in any group) are dropped, each kind counted in a warning; faces
+// that reach into a closed solid are cut where they enter it and the parts inside dropped, with a warning
+// (core/src/scene/solid_cuts.hpp); polygons that are not planar and convex are
 // triangulated; an edge that OpenMesh cannot take (non-manifold) gets its own copy of the vertices. Two-sided
 // faces go to back-to-back surfaces of their own (Surface::back_to_back): pairs of polygons with the same
 // corners in opposite orders (counted in a warning), and the faces of a two-sided material, with a reversed
