@@ -24,6 +24,11 @@ constexpr double kOnPlane = 1e-6;
 constexpr double kProbeLift = 1e-5;
 // Pieces smaller than this share of the diagonal squared are slivers of the cutting arithmetic.
 constexpr double kSliverArea = 1e-14;
+// Work before the search stops (pieces tested against a solid's face, faces a parity ray crosses): a file of
+// thousands of solids stacked in one place must not take minutes; the FZK house and the furnished rooms stay well under it. And
+// the pieces one face may be cut into.
+constexpr std::size_t kMaxWork = 50'000'000;
+constexpr std::size_t kMaxPieces = 1024;
 // A generic direction for the parity test, parallel to no face or edge a modeller writes.
 const glm::dvec3 kParityDirection = glm::normalize(glm::dvec3(0.3170, 0.8814, 0.3502));
 
@@ -86,6 +91,7 @@ class SolidCutter {
                     FacePieces& face = faces[f];
                     if (face.pieces.empty()) face.pieces = convex_parts(corners_[f]);
                     if (face.solids.empty() || face.solids.back() != s) face.solids.push_back(s);
+                    if (face.pieces.size() >= kMaxPieces || over_budget(face.pieces.size())) continue;
                     for (const auto& part : g_parts(g)) cut_face(f, g, part, face);
                 }
             }
@@ -97,13 +103,22 @@ class SolidCutter {
     bool inside(std::uint32_t face, const FacePieces& pieces, const std::vector<glm::dvec3>& piece) {
         const glm::dvec3 probe = centroid(piece) + lift_ * planes_[face].normal;
         for (std::uint32_t s : pieces.solids)
-            if (inside_solid(probe, s)) return true;
+            if (!over_budget(solids_.polygons[s].size()) && inside_solid(probe, s)) return true;
         return false;
     }
 
     double sliver() const { return sliver_; }
+    // Whether the work allowed ran out, so that some faces were left as they were.
+    bool stopped() const { return stopped_; }
 
   private:
+    // Counts `amount` of work (pieces tested, triangles crossed) and says whether the budget is spent.
+    bool over_budget(std::size_t amount) {
+        work_ += amount;
+        if (work_ > kMaxWork) stopped_ = true;
+        return stopped_;
+    }
+
     const std::vector<std::vector<glm::dvec3>>& g_parts(std::uint32_t g) {
         auto [it, added] = parts_.try_emplace(g);
         if (added) it->second = convex_parts(corners_[g]);
@@ -223,6 +238,8 @@ class SolidCutter {
     const Solids& solids_;
     const double tolerance_, lift_, sliver_;
     std::vector<Plane> planes_;
+    std::size_t work_ = 0;
+    bool stopped_ = false;
     std::unordered_map<std::uint32_t, std::vector<std::vector<glm::dvec3>>> parts_;
 };
 
@@ -328,6 +345,12 @@ std::optional<PolygonSoup> cut_faces_at_solids(const PolygonSoup& soup, std::vec
         if (!changed) continue;
         ++cut;
         kept[f] = std::move(keep);
+    }
+    if (cutter.stopped()) {
+        warnings.push_back(
+            soup.source + ": the search for faces inside closed solids stopped after " +
+            std::to_string(kMaxWork) +
+            " steps; faces it did not reach may still reach into solids and let light through");
     }
     if (cut == 0) return std::nullopt;
     warnings.push_back(
