@@ -25,8 +25,8 @@ constexpr double kProbeLift = 1e-5;
 // Pieces smaller than this share of the diagonal squared are slivers of the cutting arithmetic.
 constexpr double kSliverArea = 1e-14;
 // Work before the search stops (pieces tested against a solid's face, faces a parity ray crosses): a file of
-// thousands of solids stacked in one place must not take minutes; the FZK house and the furnished rooms stay well under it. And
-// the pieces one face may be cut into.
+// thousands of solids stacked in one place must not take minutes, and the FZK house and the furnished rooms
+// stay well under it. And the pieces one face may be cut into.
 constexpr std::size_t kMaxWork = 50'000'000;
 constexpr std::size_t kMaxPieces = 1024;
 // A generic direction for the parity test, parallel to no face or edge a modeller writes.
