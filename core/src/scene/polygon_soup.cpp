@@ -95,8 +95,7 @@ std::vector<glm::dvec3> rotated_to_smallest(std::vector<glm::dvec3> points) {
 
 std::size_t hash_points(const std::vector<glm::dvec3>& points) {
     std::size_t h = points.size();
-    for (const glm::dvec3& p : points)
-        for (int c = 0; c < 3; ++c) h = h * 0x100000001b3ull ^ std::hash<double>{}(p[c] + 0.0);
+    for (const glm::dvec3& p : points) h = h * 0x100000001b3ull ^ PositionHash {}(p);
     return h;
 }
 
@@ -132,10 +131,6 @@ double scene_size_squared(const PolygonSoup& soup) {
     for (const auto& p : soup.positions) box.extend(p);
     const double d = glm::length(box.extent());
     return d * d;
-}
-
-std::vector<glm::dvec3> polygon_points(const PolygonSoup& soup, std::uint32_t index) {
-    return corner_positions(soup, without_repeats(soup, soup.polygons[index].vertices));
 }
 
 // The soup without the polygons that repeat an earlier one (with area), and their count; nothing when none

@@ -310,7 +310,7 @@ std::optional<PolygonSoup> cut_faces_at_solids(const PolygonSoup& soup, std::vec
     for (const glm::dvec3& p : soup.positions) box.extend(p);
     const double diagonal = glm::length(box.extent());
     for (std::size_t i = 0; i < soup.polygons.size(); ++i) {
-        corners[i] = corner_positions(soup, without_repeats(soup, soup.polygons[i].vertices));
+        corners[i] = polygon_points(soup, static_cast<std::uint32_t>(i));
         if (corners[i].size() < 3 || !(polygon_area(corners[i]) > kSliverArea * diagonal * diagonal))
             corners[i].clear();
     }

@@ -41,4 +41,8 @@ std::vector<glm::dvec3> corner_positions(const PolygonSoup& soup, const std::vec
     return out;
 }
 
+std::vector<glm::dvec3> polygon_points(const PolygonSoup& soup, std::uint32_t index) {
+    return corner_positions(soup, without_repeats(soup, soup.polygons[index].vertices));
+}
+
 }  // namespace rad

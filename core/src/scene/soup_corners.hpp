@@ -37,4 +37,7 @@ Corners polygon_corners(const PolygonSoup& soup, const PolygonSoup::Polygon& p);
 
 std::vector<glm::dvec3> corner_positions(const PolygonSoup& soup, const std::vector<std::uint32_t>& idx);
 
+// The positions of a polygon's distinct corners, in order.
+std::vector<glm::dvec3> polygon_points(const PolygonSoup& soup, std::uint32_t index);
+
 }  // namespace rad
