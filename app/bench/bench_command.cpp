@@ -1,7 +1,8 @@
 // `radiosity bench [SCENE]`: the speed-against-error sweep. Every radiosity setting is timed and compared
 // with the converged solve of its own form factors (solver error), with a path-traced patch reference
 // (total error) and with a path-traced image (image error); the path tracer is set beside radiosity's image.
-// `--scaling` runs the scaling sweep instead: builtin furnaces from 1k to 1M faces, clustered and uniform.
+// `--scaling` runs the scaling sweep instead: builtin furnaces from 1k to 1M faces, clustered and uniform;
+// `--leaks` the leak suite: closed rooms lit from outside, with every subdivision.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "bench/bench_plan.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_sweep.hpp"
+#include "bench/leak_sweep.hpp"
 #include "bench/scaling_report.hpp"
 #include "bench/scaling_sweep.hpp"
 #include "cli/commands.hpp"
@@ -27,6 +29,8 @@ struct BenchOptions {
     std::string scene;  // empty: the plan's scenes
     bool quick = false;
     bool scaling = false;
+    bool leaks = false;
+    std::string leak_dir = LeakPlan{}.folder;
     std::vector<std::string> scaling_faces;  // empty: the plan's
     std::string out_dir = "out/bench";
     HeadlessPlatform gl_platform = HeadlessPlatform::automatic;
@@ -64,8 +68,27 @@ int run_scaling_bench(const BenchOptions& options) {
     return 0;
 }
 
+int run_leak_bench(const BenchOptions& options) {
+    LeakPlan plan;
+    plan.folder = options.leak_dir;
+    check_leak_plan(plan);
+    const std::filesystem::path out_dir = make_out_dir(options.out_dir);
+    const HeadlessContext context(options.gl_platform);
+    std::fprintf(stderr, "bench: the leak suite from %s; rendering with %s\n", plan.folder.c_str(),
+                 context.description().c_str());
+    const std::vector<LeakRow> rows =
+        run_leaks(plan, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+    const std::string table = leak_table(rows);
+    std::fputs(table.c_str(), stdout);
+    write_file_atomically(out_dir / "bench.md", table);
+    write_file_atomically(out_dir / "bench.csv", leak_csv(rows));
+    std::printf("\nwrote bench.md and bench.csv in %s\n", out_dir.string().c_str());
+    return 0;
+}
+
 int run_bench(const BenchOptions& options) {
     if (options.scaling) return run_scaling_bench(options);
+    if (options.leaks) return run_leak_bench(options);
     BenchPlan plan = default_bench_plan(options.quick);
     if (!options.scene.empty()) plan.scenes = {options.scene};
     const std::filesystem::path out_dir = make_out_dir(options.out_dir);
@@ -110,6 +133,11 @@ CommandRunner add_bench_command(CLI::App& app) {
         ->add_option("--scaling-faces", options->scaling_faces,
                      "With --scaling: the furnace sizes, as builtin:furnace-N spells them (10k,100k,1m)")
         ->delimiter(',');
+    bench->add_flag("--leaks", options->leaks,
+                    "Instead: the leak suite, closed rooms lit from outside (assets/hard/leak_*.obj), solved "
+                    "with every subdivision, with the light found inside each");
+    bench->add_option("--leak-dir", options->leak_dir, "With --leaks: the folder of the leak suite's rooms")
+        ->capture_default_str();
     bench
         ->add_option("--out-dir", options->out_dir,
                      "Folder for bench.md (the table), bench.csv and bench.svg")
@@ -119,6 +147,11 @@ CommandRunner add_bench_command(CLI::App& app) {
         if (!*bench) return -1;
         if (!options->scaling && !options->scaling_faces.empty())
             throw InputError("--scaling-faces: only with --scaling");
+        if (options->scaling && options->leaks) throw InputError("--leaks: not with --scaling");
+        if (!options->leaks && options->leak_dir != LeakPlan{}.folder)
+            throw InputError("--leak-dir: only with --leaks");
+        if (options->leaks && !options->scene.empty())
+            throw InputError(options->scene + ": the leak suite takes no scene (it solves its own rooms)");
         if (options->scaling && !options->scene.empty())
             throw InputError(options->scene +
                              ": the scaling sweep takes no scene (it solves builtin furnaces)");

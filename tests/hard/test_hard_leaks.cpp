@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rad/mesh/patch_mesh.hpp"
+#include "rad/reference/leak_rooms.hpp"
 #include "rad/scene/polygon_soup.hpp"
 #include "rad/scene/scene_loader.hpp"
 #include "rad/transport/transport.hpp"
@@ -18,67 +19,14 @@
 namespace rad {
 namespace {
 
-struct Interior {
-    glm::dvec3 lower, upper;
-};
-
-// Whether the element lies on the interior's boundary with its front looking in.
-bool looks_in(const Patch& p, const Interior& room) {
-    const glm::dvec3 probe = p.centroid + 1e-3 * p.normal;
-    for (int a = 0; a < 3; ++a) {
-        if (p.centroid[a] < room.lower[a] - 1e-9 || p.centroid[a] > room.upper[a] + 1e-9) return false;
-        if (probe[a] <= room.lower[a] || probe[a] >= room.upper[a]) return false;
-    }
-    return true;
-}
-
-struct Leak {
-    double worst_inside = 0.0;  // the largest radiosity of an element looking into the dark interior
-    double lit_mean = 0.0;      // the area-weighted mean radiosity of the lit elements that emit nothing
-    std::size_t inside = 0;
-};
-
-Leak measure(const test::SolvedScene& s, const Interior& dark) {
-    Leak leak;
-    double power = 0.0, area = 0.0;
-    const Transport& t = *s.system.transport;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        const Patch& p = s.system.patches->patches[i];
-        const double b = s.radiosity[i].x;
-        if (looks_in(p, dark)) {
-            ++leak.inside;
-            leak.worst_inside = std::max(leak.worst_inside, b);
-        } else if (b > 0.0 && !s.scene.surfaces[p.surface].material.emits()) {
-            power += t.area[i] * b;
-            area += t.area[i];
-        }
-    }
-    leak.lit_mean = area > 0.0 ? power / area : 0.0;
-    return leak;
-}
-
-struct LeakCase {
-    std::string name;
-    bool sky;  // lit by a sky; else by its own lamp in the neighbouring room
-    Interior dark;
-};
-
-const Interior kUnitRoom{glm::dvec3(0.0), glm::dvec3(1.0)};
-
-std::vector<LeakCase> leak_cases() {
-    return {{"leak_inward_box", true, kUnitRoom},
-            {"leak_slabs_touching", true, kUnitRoom},
-            {"leak_slabs_overlap", true, kUnitRoom},
-            {"leak_slabs_edges", true, kUnitRoom},
-            {"leak_floor_under", true, kUnitRoom},
-            {"leak_leg_through", true, kUnitRoom},
-            {"leak_two_rooms", false, {glm::dvec3(1.1, 0.0, 0.0), glm::dvec3(2.1, 1.0, 1.0)}}};
-}
-
-Scene leak_scene(const LeakCase& c) {
-    Scene scene = load_scene(std::string(RAD_SOURCE_DIR) + "/assets/hard/" + c.name + ".obj");
-    if (c.sky) scene.sky = Sky{Sky::Kind::uniform, glm::dvec3(1.0)};
+Scene leak_scene(const LeakRoom& room) {
+    Scene scene = load_scene(std::string(RAD_SOURCE_DIR) + "/assets/hard/" + room.name + ".obj");
+    if (room.sky) scene.sky = Sky{Sky::Kind::uniform, glm::dvec3(1.0)};
     return scene;
+}
+
+Leak measure(const test::SolvedScene& s, const BoundingBox& dark) {
+    return measure_leak(s.scene, *s.system.patches, s.radiosity, dark);
 }
 
 class LeakSuite : public ::testing::TestWithParam<Subdivision> {};
@@ -91,7 +39,7 @@ double base_patch_size(const Scene& scene, Subdivision subdivision) {
 // At most 1e-6 of the light outside reaches the interior (rounding). Not yet for clustering's dark room
 // beside a lit one, which gets 2e-4 of the lit room's light (docs/hard-cases.md): held below 1e-3.
 TEST_P(LeakSuite, NoLightReachesAClosedInterior) {
-    for (const LeakCase& c : leak_cases()) {
+    for (const LeakRoom& c : leak_rooms()) {
         Scene scene = leak_scene(c);
         const double size = base_patch_size(scene, GetParam());
         // As the program sets them: the lamps' light aimed at by shadow rays.
@@ -101,7 +49,7 @@ TEST_P(LeakSuite, NoLightReachesAClosedInterior) {
         settings.form_factors.emitted_luminance =
             emitted_luminance(scene, settings.form_factors.emitting_surfaces);
         const auto s = test::solve_scene(std::move(scene), settings, size);
-        const Leak leak = measure(*s, c.dark);
+        const Leak leak = measure(*s, c.interior);
         const bool open = GetParam() == Subdivision::clustered && c.name == "leak_two_rooms";
         // Energy balances: what the lamp and the sky bring is absorbed or escapes.
         const EnergyBalance e = energy_balance(*s->system.transport, s->radiosity);
@@ -120,9 +68,9 @@ TEST_P(LeakSuite, NoLightReachesAClosedInterior) {
 // every surface inside facing the source, and a cluster sends the mean radiosity of all its surfaces. Held
 // below 15 %.
 TEST(LeakSuiteClustered, FinerBasePatchesLetInLittle) {
-    for (const LeakCase& c : leak_cases()) {
+    for (const LeakRoom& c : leak_rooms()) {
         const auto s = test::solve_scene(leak_scene(c), Subdivision::clustered);
-        const Leak leak = measure(*s, c.dark);
+        const Leak leak = measure(*s, c.interior);
         EXPECT_LE(leak.worst_inside, 0.15 * leak.lit_mean)
             << c.name << ": the interior gets " << leak.worst_inside / leak.lit_mean
             << " of the light outside";
