@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rad/solve/solver.hpp"
+#include "rad/transport/transport_methods.hpp"
 #include "rad/transport/uniform/form_factors.hpp"
 
 namespace rad {
@@ -13,6 +14,12 @@ namespace rad {
 struct EstimatorSetting {
     FormFactorMethod method = FormFactorMethod::hemisphere;
     int rays = 4096;
+};
+
+// One refining transport method (rad/transport/transport_methods.hpp) and its --refine-tol values.
+struct RefinedRuns {
+    Subdivision method;
+    std::vector<double> tolerances;
 };
 
 // What `radiosity bench` sweeps, per scene: meshes from coarse to fine (patch sizes as multiples of the
@@ -37,11 +44,9 @@ struct BenchPlan {
     std::vector<int> comparison_sizes;
     int comparison_max_spp = 0;    // the path tracer's search for radiosity's image error stops here
     int further_view_frames = 21;  // frames whose median time is a further view's cost
-    // Adaptive subdivision and hierarchical radiosity at these --refine-tol values (default first or base
-    // patches and solver), per scene.
-    std::vector<double> adaptive_tolerances;
-    std::vector<double> hierarchical_tolerances;
-    std::vector<double> clustered_tolerances;  // clustering, likewise (default 0.05)
+    // Methods that refine their own elements, each at these --refine-tol values (default first or base
+    // patches and solver), per scene, in this order.
+    std::vector<RefinedRuns> refined;
 };
 
 // The default sweep (a few minutes on 2 cores), or the quick one for CI (seconds).

@@ -28,16 +28,13 @@ std::string format(const char* pattern, double value) {
     return text;
 }
 
-// Hierarchical radiosity links every pair of base patches first: beyond this many the bench skips it (a
-// furnished room's 30,000 base patches took over 15 minutes).
-constexpr std::size_t kHierarchicalMaxBasePatches = 5'000;
-
 PipelineOptions pipeline_options(const std::string& scene, double patch_size, const EstimatorSetting& setting,
                                  const BenchPlan& plan) {
     PipelineOptions options;
     options.scene.scene = scene;
     options.scene.patch_size = patch_size;
-    options.subdivision.method = "uniform";  // the meshes of the sweep; run_subdivided sets its own
+    // The meshes of the sweep are uniform; run_subdivided sets its own.
+    options.subdivision.method = subdivision_name(Subdivision::uniform);
     options.form_factors.method = setting.method;
     options.form_factors.rays = setting.rays;
     options.solver.tolerance = plan.tolerance;
@@ -119,9 +116,8 @@ class SceneSweep {
             [](double a, double b) { return std::abs(std::log(a)) < std::abs(std::log(b)); });
         for (double factor : plan_.size_factors)
             run_level(factor * default_size_, factor == *nearest_default);
-        for (double tolerance : plan_.adaptive_tolerances) run_subdivided("adaptive", tolerance);
-        for (double tolerance : plan_.hierarchical_tolerances) run_subdivided("hierarchical", tolerance);
-        for (double tolerance : plan_.clustered_tolerances) run_subdivided("clustered", tolerance);
+        for (const RefinedRuns& runs : plan_.refined)
+            for (double tolerance : runs.tolerances) run_subdivided(transport_method(runs.method), tolerance);
     }
 
   private:
@@ -169,13 +165,16 @@ class SceneSweep {
 
     // Adaptive, hierarchical or clustered subdivision with default first or base patches: times, form factors
     // or links, and the image error (the leaves are not the patch reference's patches).
-    void run_subdivided(const std::string& method, double tolerance) {
+    void run_subdivided(const TransportMethod& transport, double tolerance) {
+        const std::string method(transport.name);
         PipelineOptions options = pipeline_options(scene_, 0.0, {FormFactorMethod::hemisphere, 0}, plan_);
         options.subdivision.method = method;
         options.subdivision.tolerance = tolerance;
         RadiosityPipeline pipeline(options);
-        if (method == "hierarchical" && pipeline.loaded().patches.size() > kHierarchicalMaxBasePatches) {
-            results_.notes.push_back(scene_ + ": hierarchical not run, " +
+        // A method whose first pass links every pair of base patches is skipped past its practical size (a
+        // furnished room's 30,000 base patches took hierarchical radiosity over 15 minutes).
+        if (pipeline.loaded().patches.size() > transport.practical_base_patches) {
+            results_.notes.push_back(scene_ + ": " + method + " not run, " +
                                      std::to_string(pipeline.loaded().patches.size()) +
                                      " base patches (its first links are every pair of them)");
             return;
@@ -190,7 +189,7 @@ class SceneSweep {
         row.links = pipeline.transport().report().interactions;
         row.patch_size = pipeline.loaded().patch_size;
         row.estimator =
-            (method == "adaptive" ? "hemisphere " + std::to_string(kDefaultHemisphereRays) : "links") +
+            (transport.has_matrix ? "hemisphere " + std::to_string(kDefaultHemisphereRays) : "links") +
             format(" tol %.3g", tolerance);
         row.solver = std::string(solver_method_name(pipeline.method()));
         row.steps = report.step;

@@ -35,7 +35,7 @@ std::string scaling_table(const ScalingResults& results) {
                 format("%.2f | ", r.seconds()) + format("%.0f | ", double(r.peak_bytes) / 1e6) +
                 format("%.2g |\n", r.furnace_error);
     }
-    text += "\nCrossover: " + scaling_crossover(results.rows).text + ".\n";
+    text += "\nCrossover: " + scaling_crossover(results.rows, results.faster, results.other).text + ".\n";
     for (const std::string& note : results.notes) text += "- " + note + "\n";
     return text;
 }

@@ -29,16 +29,16 @@ double furnace_error(std::span<const glm::dvec3> radiosity) {
     return worst;
 }
 
-ScalingRow run_furnace(const std::string& spelled, const std::string& subdivision, bool& peak_per_run) {
+ScalingRow run_furnace(const std::string& spelled, Subdivision method, bool& peak_per_run) {
     ScalingRow row;
     row.scene = "builtin:furnace-" + spelled;
-    row.subdivision = subdivision;
+    row.subdivision = std::string(subdivision_name(method));
     // What the last run freed goes back to the system first, so this run's peak is its own.
     malloc_trim(0);
     peak_per_run = reset_peak_resident() && peak_per_run;
     PipelineOptions options;
     options.scene.scene = row.scene;
-    options.subdivision.method = subdivision;
+    options.subdivision.method = row.subdivision;
     try {
         RadiosityPipeline pipeline(options);
         for (const Surface& s : pipeline.loaded().scene.surfaces) row.faces += s.mesh.n_faces();
@@ -74,26 +74,28 @@ ScalingPlan default_scaling_plan(bool quick) {
     ScalingPlan plan;
     if (quick) {
         plan.faces = {"1k", "2k"};
-        plan.uniform_max_faces = 2'000;
+        plan.methods = {{Subdivision::clustered}, {Subdivision::uniform, 2'000}};
         return plan;
     }
     plan.faces = {"1k", "3k", "10k", "30k", "100k", "300k", "1m"};
-    plan.uniform_max_faces = 100'000;
+    plan.methods = {{Subdivision::clustered}, {Subdivision::uniform, 100'000}};
     return plan;
 }
 
-Crossover scaling_crossover(const std::vector<ScalingRow>& rows) {
-    // Per size, the uniform and clustered times, in the plan's order (ascending sizes).
+Crossover scaling_crossover(const std::vector<ScalingRow>& rows, const std::string& faster,
+                            const std::string& other) {
+    // Per size, the two methods' times, in the plan's order (ascending sizes); the patches are the other's
+    // (the uniform mesh's, in the plan).
     struct Pair {
-        std::size_t faces = 0, uniform_patches = 0;
-        double uniform = 0.0, clustered = 0.0;
+        std::size_t faces = 0, other_patches = 0;
+        double other = 0.0, faster = 0.0;
     };
     std::vector<Pair> pairs;
-    for (const ScalingRow& u : rows) {
-        if (u.subdivision != "uniform" || !u.failure.empty()) continue;
-        for (const ScalingRow& c : rows) {
-            if (c.subdivision == "clustered" && c.scene == u.scene && c.failure.empty())
-                pairs.push_back({u.faces, u.patches, u.seconds(), c.seconds()});
+    for (const ScalingRow& o : rows) {
+        if (o.subdivision != other || !o.failure.empty()) continue;
+        for (const ScalingRow& f : rows) {
+            if (f.subdivision == faster && f.scene == o.scene && f.failure.empty())
+                pairs.push_back({o.faces, o.patches, o.seconds(), f.seconds()});
         }
     }
     Crossover out;
@@ -101,35 +103,36 @@ Crossover scaling_crossover(const std::vector<ScalingRow>& rows) {
         out.text = "no size ran both ways";
         return out;
     }
-    const auto faster = [](const Pair& p) { return p.clustered < p.uniform; };
-    const auto first = std::find_if(pairs.begin(), pairs.end(), faster);
+    const std::string patches = " " + other + " patches)";
+    const auto is_faster = [](const Pair& p) { return p.faster < p.other; };
+    const auto first = std::find_if(pairs.begin(), pairs.end(), is_faster);
     if (first == pairs.end()) {
-        out.text = "uniform was faster at every size both ran, up to " + std::to_string(pairs.back().faces) +
-                   " faces (" + std::to_string(pairs.back().uniform_patches) + " uniform patches)";
+        out.text = other + " was faster at every size both ran, up to " + std::to_string(pairs.back().faces) +
+                   " faces (" + std::to_string(pairs.back().other_patches) + patches;
         return out;
     }
     if (first == pairs.begin()) {
         out.found = true;
-        out.text = "clustered was faster at every size both ran, from " + std::to_string(first->faces) +
-                   " faces (" + std::to_string(first->uniform_patches) + " uniform patches)";
+        out.text = faster + " was faster at every size both ran, from " + std::to_string(first->faces) +
+                   " faces (" + std::to_string(first->other_patches) + patches;
         return out;
     }
     // The ratio of times crosses 1 between the two sizes: interpolated in log(ratio) against log(faces).
     const Pair& a = *(first - 1);
     const Pair& b = *first;
-    const double ra = std::log(a.clustered / a.uniform), rb = std::log(b.clustered / b.uniform);
+    const double ra = std::log(a.faster / a.other), rb = std::log(b.faster / b.other);
     const double t = ra / (ra - rb);
     const auto at = [t](double x, double y) {
         return std::exp(std::log(x) + t * (std::log(y) - std::log(x)));
     };
     out.found = true;
-    out.text = format("clustered gets faster than uniform at about %.0f faces",
-                      at(double(a.faces), double(b.faces))) +
-               format(" (%.0f uniform patches)", at(double(a.uniform_patches), double(b.uniform_patches))) +
-               ": uniform was faster at " + std::to_string(a.faces) + " faces (" +
-               format("%.2f s against ", a.uniform) + format("%.2f s), clustered at ", a.clustered) +
-               std::to_string(b.faces) + " (" + format("%.2f s against ", b.clustered) +
-               format("%.2f s)", b.uniform);
+    out.text = faster + " gets faster than " + other +
+               format(" at about %.0f faces", at(double(a.faces), double(b.faces))) +
+               format(" (%.0f", at(double(a.other_patches), double(b.other_patches))) + patches + ": " +
+               other + " was faster at " + std::to_string(a.faces) + " faces (" +
+               format("%.2f s against ", a.other) + format("%.2f s), ", a.faster) + faster + " at " +
+               std::to_string(b.faces) + " (" + format("%.2f s against ", b.faster) +
+               format("%.2f s)", b.other);
     return out;
 }
 
@@ -141,20 +144,23 @@ void run_scaling(const ScalingPlan& plan, ScalingResults& results,
                  const std::function<void(const ScalingResults&)>& row_done,
                  const std::function<void(const std::string&)>& log) {
     bool peak_per_run = true;
+    if (plan.methods.size() >= 2) {
+        results.faster = subdivision_name(plan.methods[0].method);
+        results.other = subdivision_name(plan.methods[1].method);
+    }
     for (const std::string& spelled : plan.faces) {
-        for (const std::string& subdivision : plan.subdivisions) {
-            if (subdivision == "uniform" && furnace_faces("furnace-" + spelled) > plan.uniform_max_faces)
-                continue;
-            const ScalingRow row = run_furnace(spelled, subdivision, peak_per_run);
+        for (const ScalingMethod& method : plan.methods) {
+            if (furnace_faces("furnace-" + spelled) > method.max_faces) continue;
+            const ScalingRow row = run_furnace(spelled, method.method, peak_per_run);
             if (row.failure.empty()) {
-                log(format("%8.2f s  ", row.seconds()) + row.scene + "  " + subdivision + "  " +
+                log(format("%8.2f s  ", row.seconds()) + row.scene + "  " + row.subdivision + "  " +
                     std::to_string(row.elements) + " elements  " + std::to_string(row.links) + " links" +
                     format("  build %.2f s", row.build_seconds) +
                     format("  solve %.2f s", row.solve_seconds) +
                     format("  peak %.0f MB", double(row.peak_bytes) / 1e6) +
                     format("  furnace error %.2g", row.furnace_error));
             } else {
-                log(row.scene + "  " + subdivision + "  failed: " + row.failure);
+                log(row.scene + "  " + row.subdivision + "  failed: " + row.failure);
             }
             results.rows.push_back(row);
             row_done(results);

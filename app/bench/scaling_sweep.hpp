@@ -5,18 +5,26 @@
 #include <string>
 #include <vector>
 
+#include "rad/transport/transport_methods.hpp"
+
 namespace rad {
 
-// `radiosity bench --scaling`: builtin furnaces (a closed room of tessellated balls, B = E / (1 − ρ) on every
-// face) from small to large, solved at the defaults with clustering and, up to a size, with uniform patches.
-struct ScalingPlan {
-    std::vector<std::string> faces;     // furnace sizes as builtin:furnace-N spells them: "10k", "1m"
-    std::size_t uniform_max_faces = 0;  // uniform runs on the furnaces up to this many faces
-    std::vector<std::string> subdivisions = {"clustered", "uniform"};
+// One transport method of the sweep, run on the furnaces up to `max_faces`.
+struct ScalingMethod {
+    Subdivision method;
+    std::size_t max_faces = kAnySize;
 };
 
-// From 1k to 1M faces (uniform to 100k: above, its form factors take minutes and gigabytes), or 1k and 2k
-// for the tests.
+// `radiosity bench --scaling`: builtin furnaces (a closed room of tessellated balls, B = E / (1 − ρ) on every
+// face) from small to large, solved at the defaults with each of the plan's methods; the crossover compares
+// the first two.
+struct ScalingPlan {
+    std::vector<std::string> faces;  // furnace sizes as builtin:furnace-N spells them: "10k", "1m"
+    std::vector<ScalingMethod> methods;
+};
+
+// From 1k to 1M faces with clustering, and uniform patches to 100k (above, its form factors take minutes and
+// gigabytes), or 1k and 2k for the tests.
 ScalingPlan default_scaling_plan(bool quick);
 
 // One furnace solved one way. Seconds are the pipeline's stages: mesh (the scene made and meshed), build
@@ -39,14 +47,16 @@ struct ScalingRow {
     std::string failure;         // why the run stopped, or empty
 };
 
-// Where clustering gets faster than uniform patches, from the sizes both ran on.
+// Where the `faster` method gets faster than the `other`, from the sizes both ran on.
 struct Crossover {
     bool found = false;
     std::string text;  // one sentence for the report
 };
-Crossover scaling_crossover(const std::vector<ScalingRow>& rows);
+Crossover scaling_crossover(const std::vector<ScalingRow>& rows, const std::string& faster,
+                            const std::string& other);
 
 struct ScalingResults {
+    std::string faster, other;  // the methods the crossover compares: the plan's first two
     std::vector<ScalingRow> rows;
     std::vector<std::string> notes;
 };

@@ -51,7 +51,7 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
         loaded_ = load_scene_only(options.scene);
         choose_automatic_subdivision();
     } else {
-        loaded_ = load_and_mesh(options.scene, base_patch_scale(subdivision_));
+        loaded_ = load_and_mesh(options.scene, transport_method(subdivision_).base_patch_scale);
     }
     seconds_.mesh = clock.seconds();
     solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
@@ -60,21 +60,22 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
 }
 
 void RadiosityPipeline::choose_automatic_subdivision() {
-    // Every face is at least one patch: a scene of more faces than the rule allows is clustered without
-    // meshing it at the uniform size first.
+    // Every face is at least one patch: where the face count alone decides (it is past every limit but the
+    // last method's), the scene is not meshed at the uniform size first.
     std::size_t faces = 0;
     for (const Surface& surface : loaded_.scene.surfaces) faces += surface.mesh.n_faces();
-    subdivision_ = choose_subdivision(Subdivision::automatic, faces);
-    if (subdivision_ == Subdivision::uniform) {
+    const TransportMethod* method = &automatic_transport_method(faces);
+    const bool meshed = method->automatic_up_to != kAnySize;
+    if (meshed) {
         mesh_loaded(loaded_, options_.scene, 1.0);
-        subdivision_ = choose_subdivision(Subdivision::automatic, loaded_.patches.size());
+        method = &automatic_transport_method(loaded_.patches.size());
     }
-    options_.subdivision.method = std::string(subdivision_name(subdivision_));
-    if (!automatic_method(options_.solver)) check_solver_supported(method_, has_matrix(subdivision_));
-    // Clustering's base patches are larger, unless the command line gave their size.
-    const bool meshed = loaded_.patches.size() > 0;
-    if (subdivision_ != Subdivision::uniform && (!meshed || options_.scene.patch_size <= 0.0))
-        mesh_loaded(loaded_, options_.scene, base_patch_scale(subdivision_));
+    subdivision_ = method->id;
+    options_.subdivision.method = std::string(method->name);
+    if (!automatic_method(options_.solver)) check_solver_supported(method_, method->has_matrix);
+    // A method of larger base patches meshes again, unless the command line gave their size.
+    if (!meshed || (method->base_patch_scale != 1.0 && options_.scene.patch_size <= 0.0))
+        mesh_loaded(loaded_, options_.scene, method->base_patch_scale);
 }
 
 PipelineOptions options_from_saved(const SavedSettings& s, const PipelineOptions& base) {
@@ -174,13 +175,8 @@ TransportSettings RadiosityPipeline::transport_settings() const {
     settings.adaptive = adaptive_options(options_.subdivision, options_.form_factors.seed);
     settings.hierarchical =
         hierarchical_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
-    // One memory budget, --max-memory, for the form factors and the links alike.
-    settings.hierarchical.max_memory_bytes = settings.form_factors.max_memory_bytes;
-    settings.hierarchical.patch_size = settings.form_factors.patch_size;
-    settings.hierarchical.count_patches_at = settings.form_factors.count_patches_at;
     settings.clustered =
         clustered_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
-    settings.clustered.max_memory_bytes = settings.form_factors.max_memory_bytes;
     // An automatic choice solves the passes by bounces; the final solver is chosen once the transport is
     // known.
     settings.pass_method = method_;
@@ -356,10 +352,8 @@ DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Prog
 }
 
 double RadiosityPipeline::display_patch_size() const {
-    // A hierarchy's leaves are drawn on patches of the uniform size its base patches were scaled from.
-    const bool hierarchy =
-        subdivision_ == Subdivision::hierarchical || subdivision_ == Subdivision::clustered;
-    return hierarchy ? loaded_.patch_size / base_patch_scale(subdivision_) : 0.0;
+    const TransportMethod& method = transport_method(subdivision_);
+    return method.drawn_on_uniform_patches ? loaded_.patch_size / method.base_patch_scale : 0.0;
 }
 
 void RadiosityPipeline::add_preview_direct_light(DisplayMesh& display) const {

@@ -1,5 +1,6 @@
 #include "pipeline/subdivision_options.hpp"
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -8,20 +9,6 @@
 #include "rad/util/error.hpp"
 
 namespace rad {
-
-double base_patch_scale(Subdivision subdivision) {
-    switch (subdivision) {
-        case Subdivision::adaptive:
-            return kAdaptiveBaseScale;
-        case Subdivision::hierarchical:
-        case Subdivision::clustered:
-            return kHierarchicalBaseScale;
-        case Subdivision::automatic:  // meshed as uniform first (choose_subdivision)
-        case Subdivision::uniform:
-            break;
-    }
-    return 1.0;
-}
 
 std::string subdivision_names(const std::string& separator) {
     std::string names;
@@ -44,19 +31,34 @@ std::vector<std::string> subdivision_name_list() {
     return names;
 }
 
+// The table's methods with what each does and the size of its first patches.
+std::string subdivision_help() {
+    std::string automatic;
+    for (const TransportMethod& m : transport_methods()) {
+        if (m.automatic_up_to == 0) continue;
+        automatic += (automatic.empty() ? "" : ", ") + std::string(m.name) +
+                     (m.automatic_up_to == kAnySize
+                          ? " beyond"
+                          : " up to " + std::to_string(m.automatic_up_to) + " patches at the uniform size");
+    }
+    std::string help = "How patches are made: auto (" + automatic + ")";
+    for (const TransportMethod& m : transport_methods()) {
+        help += ", " + std::string(m.name) + " (" + std::string(m.help);
+        if (m.base_patch_scale != 1.0) {
+            char scale[32];
+            std::snprintf(scale, sizeof scale, "%g", m.base_patch_scale);
+            help += std::string("; --patch-size is its first patches' size, by default ") + scale +
+                    " times the uniform one";
+        }
+        help += ")";
+    }
+    return help;
+}
+
 }  // namespace
 
 void add_subdivision_options(CLI::App& command, SubdivisionOptions& options) {
-    command
-        .add_option(
-            "--subdivision", options.method,
-            "How patches are made: auto (uniform up to " + std::to_string(kAutomaticUniformPatches) +
-                " patches at the uniform size, clustered beyond), uniform (one size), adaptive (split where "
-                "the light changes, then "
-                "solved again; --patch-size is the first size, by default twice the uniform one), "
-                "hierarchical (a quadtree of elements linked where needed; --patch-size is the base "
-                "patch size, by default 4 times the uniform one) or clustered (hierarchical with volume "
-                "clusters over the base patches, for scenes of many faces; base patches as hierarchical)")
+    command.add_option("--subdivision", options.method, subdivision_help())
         ->check(CLI::IsMember(subdivision_name_list()))
         ->capture_default_str();
     command

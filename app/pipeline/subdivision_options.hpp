@@ -33,15 +33,4 @@ HierarchicalOptions hierarchical_options(const SubdivisionOptions& options, int 
 // on the Cornell box (tests/transport/test_adaptive_subdivision.cpp, RAD_ADAPTIVE_MEASURE=1).
 AdaptiveOptions adaptive_options(const SubdivisionOptions& options, std::uint64_t seed);
 
-// Without --patch-size, the first (adaptive) or base (hierarchical) patches are this many times the uniform
-// default size.
-double base_patch_scale(Subdivision subdivision);
-
-// Adaptive subdivision starts from patches this many times the uniform default size.
-inline constexpr double kAdaptiveBaseScale = 2.0;
-
-// A base patch of hierarchical radiosity is this many times the uniform default size: every pair of base
-// patches gets a link, so they are few, and the hierarchy refines them.
-inline constexpr double kHierarchicalBaseScale = 4.0;
-
 }  // namespace rad

@@ -31,7 +31,7 @@ Leak measure(const test::SolvedScene& s, const BoundingBox& dark) {
 
 class LeakSuite : public ::testing::TestWithParam<Subdivision> {};
 
-// Clustering meshes its base patches at 4 × the uniform size, as the program does (kHierarchicalBaseScale).
+// Clustering meshes its base patches at 4 × the uniform size, as the program does (its base_patch_scale).
 double base_patch_size(const Scene& scene, Subdivision subdivision) {
     return subdivision == Subdivision::clustered ? 4.0 * default_patch_size(scene) : 0.0;
 }

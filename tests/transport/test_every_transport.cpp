@@ -14,6 +14,7 @@
 #include "rad/scene/builtin_scenes.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/scene_transport.hpp"
+#include "rad/transport/transport_methods.hpp"
 #include "rad/util/error.hpp"
 
 namespace rad {
@@ -144,11 +145,10 @@ TEST_P(EveryTransport, JacobiStepsAreBounces) {
     }
 }
 
-// Every transport the program builds: `automatic` is one of them, chosen by the scene's size.
+// Every entry of the methods' table: a new method is tested here without editing this file.
 std::vector<Subdivision> transports() {
     std::vector<Subdivision> out;
-    for (Subdivision s : all_subdivisions())
-        if (s != Subdivision::automatic) out.push_back(s);
+    for (const TransportMethod& m : transport_methods()) out.push_back(m.id);
     return out;
 }
 
@@ -170,14 +170,41 @@ TEST(EveryTransportReport, NamesItsKindAndCountsItsInteractions) {
     for (Subdivision s : transports()) {
         const Built built = build(make_builtin_scene("cornell"), s, 4.0);
         const TransportReport report = built.transport.transport->report();
-        EXPECT_EQ(report.kind, subdivision_name(s));
+        const TransportMethod& entry = transport_method(s);
+        EXPECT_EQ(built.transport.method, &entry);
+        EXPECT_EQ(report.kind, entry.name);
         EXPECT_EQ(report.elements, built.transport.transport->size());
         EXPECT_GT(report.interactions, report.elements);
         EXPECT_GT(report.memory_bytes, 0u);
         EXPECT_GE(report.form_factor_passes, 1u);
-        EXPECT_EQ(report.interaction_name, has_matrix(s) ? "form factors" : "links");
-        EXPECT_EQ(built.transport.transport->matrix() != nullptr, has_matrix(s));
+        EXPECT_EQ(report.interaction_name, entry.has_matrix ? "form factors" : "links");
+        EXPECT_EQ(built.transport.transport->matrix() != nullptr, entry.has_matrix);
     }
+}
+
+// The table's own rules: names are unique and found by name; `auto` takes the first entry whose limit a
+// scene is within, so the limits grow along the table and the last one chosen takes any size; base patches
+// are never smaller than the uniform ones.
+TEST(TransportMethods, TheTableIsConsistent) {
+    std::size_t previous_limit = 0;
+    const TransportMethod* last_automatic = nullptr;
+    for (const TransportMethod& m : transport_methods()) {
+        EXPECT_EQ(find_transport_method(m.name), &m);
+        EXPECT_EQ(&transport_method(m.id), &m);
+        EXPECT_EQ(subdivision_name(m.id), m.name);
+        EXPECT_NE(m.build, nullptr) << m.name;
+        EXPECT_GE(m.base_patch_scale, 1.0) << m.name;
+        EXPECT_FALSE(m.help.empty()) << m.name;
+        if (m.automatic_up_to == 0) continue;
+        EXPECT_GT(m.automatic_up_to, previous_limit) << m.name;
+        previous_limit = m.automatic_up_to;
+        last_automatic = &m;
+        EXPECT_EQ(&automatic_transport_method(m.automatic_up_to), &m) << m.name;
+    }
+    ASSERT_NE(last_automatic, nullptr);
+    EXPECT_EQ(last_automatic->automatic_up_to, kAnySize);
+    EXPECT_EQ(find_transport_method("auto"), nullptr);
+    EXPECT_EQ(all_subdivisions().size(), transport_methods().size() + 1);
 }
 
 }  // namespace
