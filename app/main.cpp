@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "cli/command_line.hpp"
-#include "cli/input_error_message.hpp"
 #include "rad/util/error.hpp"
+#include "text/input_error_message.hpp"
 
 namespace {
 

@@ -3,6 +3,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/scene_summary.hpp"
+#include "cli/solving_options.hpp"
 #include "pipeline/scene_options.hpp"
 
 namespace rad {

@@ -14,13 +14,11 @@
 #include <optional>
 #include <sstream>
 
-#include "cli/camera_option.hpp"
-#include "cli/comma_numbers.hpp"
 #include "cli/commands.hpp"
 #include "cli/export_option.hpp"
 #include "cli/gl_platform_option.hpp"
 #include "cli/number_checks.hpp"
-#include "cli/progress_bar.hpp"
+#include "cli/solving_options.hpp"
 #include "gl/headless_context.hpp"
 #include "gl/scene_image_renderer.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
@@ -33,6 +31,9 @@
 #include "rad/util/error.hpp"
 #include "rad/util/file_names.hpp"
 #include "rad/util/stopwatch.hpp"
+#include "text/camera_text.hpp"
+#include "text/comma_numbers.hpp"
+#include "text/progress_bar.hpp"
 
 namespace rad {
 

@@ -11,12 +11,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/export_option.hpp"
-#include "cli/progress_bar.hpp"
+#include "cli/solving_options.hpp"
 #include "pipeline/radiosity_pipeline.hpp"
 #include "rad/io/output_path.hpp"
 #include "rad/io/saved_solution.hpp"
 #include "rad/io/solution_json.hpp"
 #include "rad/util/error.hpp"
+#include "text/progress_bar.hpp"
 
 namespace rad {
 

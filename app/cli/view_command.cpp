@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/export_option.hpp"
 #include "cli/number_checks.hpp"
+#include "cli/solving_options.hpp"
 #include "rad/io/saved_solution.hpp"
 #include "viewer/viewer.hpp"
 #include "viewer/viewer_options.hpp"

@@ -5,8 +5,8 @@
 #include <sstream>
 #include <vector>
 
-#include "cli/comma_numbers.hpp"
 #include "rad/util/error.hpp"
+#include "text/comma_numbers.hpp"
 
 namespace rad {
 

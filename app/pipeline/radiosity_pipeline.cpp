@@ -15,29 +15,6 @@
 
 namespace rad {
 
-void add_pipeline_options(CLI::App& command, PipelineOptions& options) {
-    add_scene_options(command, options.scene);
-    add_form_factor_options(command, options.form_factors);
-    add_solver_options(command, options.solver);
-    add_subdivision_options(command, options.subdivision);
-}
-
-void refuse_solving_options(const CLI::App& command, const std::string& saved) {
-    // The options' names, from registering them on a scratch command.
-    CLI::App scratch;
-    PipelineOptions unused;
-    add_pipeline_options(scratch, unused);
-    for (const CLI::Option* option : scratch.get_options()) {
-        const std::string name = option->get_name();
-        if (!option->nonpositional()) continue;  // the scene, which is the saved file
-        const CLI::Option* given = command.get_option_no_throw(name);
-        if (given && given->count() > 0) {
-            throw InputError(name + ": only for solving a scene; " + saved +
-                             " is solved already (solve the scene again to change it)");
-        }
-    }
-}
-
 RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(options) {
     subdivision_ = parse_subdivision(options.subdivision.method);
     method_ = solver_method(options.solver);

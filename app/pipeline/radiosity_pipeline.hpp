@@ -25,13 +25,6 @@ struct PipelineOptions {
     DisplayOptions display;
 };
 
-void add_pipeline_options(CLI::App& command, PipelineOptions& options);
-
-// A saved solution (`saved`, for the message) is solved already: the options add_pipeline_options registers
-// (the scene excepted) are refused with an InputError naming the first one given on `command`, rather than
-// ignored, so nobody believes they took effect.
-void refuse_solving_options(const CLI::App& command, const std::string& saved);
-
 // How much work was done, so callers and tests can check that nothing runs twice.
 struct WorkCounts {
     std::size_t form_factor_passes = 0;

@@ -4,42 +4,11 @@
 #include <iostream>
 #include <optional>
 
-#include "cli/number_checks.hpp"
 #include "pipeline/outside_light_options.hpp"
 #include "rad/scene/builtin_scenes.hpp"
 #include "rad/scene/scene_loader.hpp"
 
 namespace rad {
-
-namespace {
-
-// The built-in scenes' names from their list, so the help never leaves one out.
-std::string scene_help() {
-    std::string names;
-    for (const BuiltinSceneInfo& scene : builtin_scenes()) names += scene.name + ", ";
-    return "Scene: a .obj (with its .mtl), .ply, .gltf or .glb file, or builtin:NAME (" + names +
-           "or furnace-N: a closed room of balls of about N faces, e.g. furnace-100k, furnace-1m, where "
-           "B = 2 everywhere); render and view also take a saved solution, FILE.radiosity";
-}
-
-}  // namespace
-
-void add_scene_options(CLI::App& command, SceneOptions& options) {
-    command.add_option("scene", options.scene, scene_help())->capture_default_str();
-    command
-        .add_option("--patch-size", options.patch_size,
-                    "Largest patch edge, in scene units (default: a sixteenth of the scene's largest extent)")
-        ->check(positive_number());
-    command.add_option(
-        "--sky", options.sky,
-        "Light from a sky at infinity, met by every ray that leaves the scene: R,G,B (or L) is a "
-        "uniform radiance; overcast,L (or overcast,R,G,B) the CIE overcast sky of that zenith "
-        "radiance, +y up; none");
-    command.add_option(
-        "--sun", options.sun,
-        "A distant sun with shadows: X,Y,Z,E (or X,Y,Z,R,G,B), the direction toward it and the "
-        "irradiance on a plane facing it; none");
-}
 
 LoadedScene load_scene_only(const SceneOptions& options) {
     // The options are read first, so a mistyped one is reported before a long load.

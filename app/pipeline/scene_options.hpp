@@ -1,6 +1,5 @@
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 
 #include "rad/mesh/patch_mesh.hpp"
@@ -15,8 +14,6 @@ struct SceneOptions {
     std::string sky;  // --sky as given (parse_sky); empty: the scene's own (none unless the file has one)
     std::string sun;  // --sun as given (parse_sun); empty: the scene's own
 };
-
-void add_scene_options(CLI::App& command, SceneOptions& options);
 
 struct LoadedScene {
     Scene scene;

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <cstddef>
 #include <string>
 
@@ -16,8 +15,6 @@ struct SolverCommandOptions {
     std::string initial = "emission";
     double relaxation = 1.0;
 };
-
-void add_solver_options(CLI::App& command, SolverCommandOptions& options);
 
 // The method named; for "auto", jacobi until the form factors are known (see automatic_method).
 SolverMethod solver_method(const SolverCommandOptions& options);

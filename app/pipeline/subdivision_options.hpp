@@ -1,6 +1,5 @@
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <string_view>
 
@@ -13,8 +12,6 @@ struct SubdivisionOptions {
     double tolerance = 0.0;       // --refine-tol; 0 picks the method's default
     double min_patch_size = 0.0;  // --min-patch-size; 0 picks the method's default
 };
-
-void add_subdivision_options(CLI::App& command, SubdivisionOptions& options);
 
 // The subdivisions' names, joined by `separator`.
 std::string subdivision_names(const std::string& separator);

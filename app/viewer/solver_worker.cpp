@@ -1,6 +1,6 @@
 #include "viewer/solver_worker.hpp"
 
-#include "cli/input_error_message.hpp"
+#include "text/input_error_message.hpp"
 
 #include <tbb/task_arena.h>
 #include <algorithm>

@@ -15,10 +15,10 @@
 
 #include <imgui.h>
 
-#include "cli/camera_option.hpp"
 #include "rad/camera/camera_view.hpp"
 #include "rad/display/auto_exposure.hpp"
 #include "rad/io/image_file.hpp"
+#include "text/camera_text.hpp"
 #include "viewer/false_colour_legend.hpp"
 #include "viewer/help_overlay.hpp"
 #include "viewer/pick.hpp"

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/camera_option.hpp"
-#include "cli/progress_bar.hpp"
 #include "rad/io/atomic_file.hpp"
 #include "rad/io/saved_solution.hpp"
+#include "text/camera_text.hpp"
+#include "text/progress_bar.hpp"
 #include "viewer/log_plot.hpp"
 #include "viewer/panel_text.hpp"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/camera_option.hpp"
+#include "text/camera_text.hpp"
 
 namespace rad {
 namespace {

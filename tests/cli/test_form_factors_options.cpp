@@ -5,8 +5,9 @@
 #include <sstream>
 #include <thread>
 
-#include "cli/progress_bar.hpp"
+#include "cli/solving_options.hpp"
 #include "pipeline/form_factor_options.hpp"
+#include "text/progress_bar.hpp"
 
 namespace rad {
 namespace {

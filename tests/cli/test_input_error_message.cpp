@@ -2,7 +2,7 @@
 // memory budget overrun itself.
 #include <gtest/gtest.h>
 
-#include "cli/input_error_message.hpp"
+#include "text/input_error_message.hpp"
 
 namespace rad {
 namespace {

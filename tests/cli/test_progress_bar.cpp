@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
-#include "cli/progress_bar.hpp"
 #include "test_support.hpp"
+#include "text/progress_bar.hpp"
 
 namespace rad {
 namespace {

@@ -1,4 +1,4 @@
-#include "cli/comma_numbers.hpp"
+#include "text/comma_numbers.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -1,11 +1,11 @@
-#include "cli/camera_option.hpp"
+#include "text/camera_text.hpp"
 
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <vector>
 
-#include "cli/comma_numbers.hpp"
 #include "rad/util/error.hpp"
+#include "text/comma_numbers.hpp"
 
 namespace rad {
 
@@ -57,7 +57,8 @@ std::string camera_option_text(const Camera& camera) {
 std::string cameras_file_text(const std::vector<Camera>& cameras) {
     std::string text;
     if (!cameras.empty()) {
-        text = "# views kept in the viewer; field of view " + fov_text(cameras.front().fov_degrees) + " (--fov)\n";
+        text = "# views kept in the viewer; field of view " + fov_text(cameras.front().fov_degrees) +
+               " (--fov)\n";
     }
     for (const Camera& camera : cameras) text += camera_numbers(camera) + "\n";
     return text;

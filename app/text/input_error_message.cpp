@@ -1,4 +1,4 @@
-#include "cli/input_error_message.hpp"
+#include "text/input_error_message.hpp"
 
 #include <algorithm>
 #include <array>
