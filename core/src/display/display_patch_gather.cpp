@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "display/gather_rows.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
+#include "ray/ray_offset.hpp"
+#include "sampling/hemisphere_rays.hpp"
 
 namespace rad {
 

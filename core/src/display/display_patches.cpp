@@ -10,7 +10,7 @@
 #include <unordered_map>
 
 #include "rad/ray/ray_scene.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
+#include "ray/ray_offset.hpp"
 
 namespace rad {
 

@@ -17,10 +17,10 @@
 #include "display/vertex_origin.hpp"
 #include "rad/display/false_colour.hpp"
 #include "rad/scene/scene.hpp"
+#include "ray/ray_offset.hpp"
+#include "sampling/patch_shapes.hpp"
 #include "sampling/power_draws.hpp"
 #include "sampling/sampling.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
-#include "transport/uniform/patch_shapes.hpp"
 
 namespace rad {
 

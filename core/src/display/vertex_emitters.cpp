@@ -4,7 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "transport/uniform/form_factors_emitter_columns.hpp"
+#include "sampling/emitter_patches.hpp"
 #include "util/luminance.hpp"
 
 namespace rad {

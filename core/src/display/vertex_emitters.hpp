@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "rad/mesh/patch_mesh.hpp"
-#include "transport/uniform/patch_shapes.hpp"
+#include "sampling/patch_shapes.hpp"
 
 namespace rad {
 

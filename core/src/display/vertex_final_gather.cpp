@@ -13,8 +13,8 @@
 
 #include "display/gather_rows.hpp"
 #include "display/vertex_origin.hpp"
+#include "ray/ray_offset.hpp"
 #include "sampling/sampling.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad {
 

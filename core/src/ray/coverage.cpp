@@ -8,8 +8,9 @@
 #include <numbers>
 #include <vector>
 
+#include "ray/ray_offset.hpp"
+#include "sampling/hemisphere_rays.hpp"
 #include "sampling/sampling.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad {
 

@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "rad/mesh/patch_albedo.hpp"
+#include "ray/ray_offset.hpp"
 #include "reference/path_tracer_paths.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad::path_tracing {
 

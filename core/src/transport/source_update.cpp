@@ -18,7 +18,8 @@ void check_elements(const Transport& transport, const PatchMesh& elements) {
 void set_emission(Transport& transport, const PatchMesh& elements, const Scene& scene) {
     for (std::size_t i = 0; i < transport.size(); ++i) {
         transport.emission[i] = scene.surfaces[elements.patches[i].surface].material.emitted_radiosity();
-        if (!transport.outside.empty()) transport.emission[i] += transport.reflectance[i] * transport.outside[i];
+        if (!transport.outside.empty())
+            transport.emission[i] += transport.reflectance[i] * transport.outside[i];
     }
 }
 

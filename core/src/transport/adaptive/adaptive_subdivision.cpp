@@ -9,10 +9,10 @@
 #include "rad/ray/ray_scene.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
+#include "ray/ray_offset.hpp"
 #include "transport/adaptive/adaptive_gradient.hpp"
 #include "transport/adaptive/adaptive_selection.hpp"
 #include "transport/adaptive/adaptive_shadow.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
 #include "transport/uniform/form_factors_memory.hpp"
 
 namespace rad {

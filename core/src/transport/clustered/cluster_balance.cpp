@@ -7,11 +7,11 @@
 #include <glm/geometric.hpp>
 
 #include "ray/coverage.hpp"
+#include "ray/ray_offset.hpp"
 #include "sampling/sampling.hpp"
 #include "transport/clustered/cluster_flow.hpp"
 #include "transport/clustered/cluster_geometry.hpp"
 #include "transport/pooled_reach.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
 
 namespace rad {
 

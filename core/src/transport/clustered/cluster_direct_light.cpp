@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sampling/patch_shapes.hpp"
 #include "transport/clustered/cluster_balance.hpp"
 #include "transport/uniform/form_factors_emitter_columns.hpp"
 #include "transport/uniform/form_factors_rows.hpp"
-#include "transport/uniform/patch_shapes.hpp"
 #include "util/luminance.hpp"
 
 namespace rad {

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
-#include "transport/uniform/patch_shapes.hpp"
+#include "sampling/patch_shapes.hpp"
 #include "util/luminance.hpp"
 
 namespace rad {

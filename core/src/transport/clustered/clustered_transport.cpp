@@ -14,6 +14,7 @@
 #include "rad/scene/scene.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
+#include "ray/ray_offset.hpp"
 #include "transport/clustered/cluster_balance.hpp"
 #include "transport/clustered/cluster_direct_light.hpp"
 #include "transport/clustered/cluster_flow.hpp"
@@ -23,7 +24,6 @@
 #include "transport/external/outside_light.hpp"
 #include "transport/patch_materials.hpp"
 #include "transport/refinement_settings.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
 #include "transport/uniform/form_factors_memory.hpp"
 #include "util/luminance.hpp"
 

@@ -9,12 +9,12 @@
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
 #include "ray/coverage.hpp"
+#include "ray/ray_offset.hpp"
 #include "transport/external/outside_light.hpp"
 #include "transport/hierarchical/hierarchical_first_links.hpp"
 #include "transport/hierarchical/hierarchical_refine.hpp"
 #include "transport/patch_materials.hpp"
 #include "transport/refinement_settings.hpp"
-#include "transport/uniform/form_factors_hemisphere.hpp"
 #include "transport/uniform/form_factors_memory.hpp"
 #include "util/luminance.hpp"
 

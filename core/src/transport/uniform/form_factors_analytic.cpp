@@ -8,9 +8,9 @@
 #include <memory>
 #include <vector>
 
+#include "sampling/patch_shapes.hpp"
 #include "sampling/sampling.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
-#include "transport/uniform/patch_shapes.hpp"
 
 namespace rad {
 

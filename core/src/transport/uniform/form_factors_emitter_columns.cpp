@@ -6,10 +6,10 @@
 #include <glm/geometric.hpp>
 #include <memory>
 
+#include "sampling/patch_shapes.hpp"
 #include "sampling/power_draws.hpp"
 #include "transport/uniform/form_factors_analytic.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
-#include "transport/uniform/patch_shapes.hpp"
 
 namespace rad {
 
@@ -35,29 +35,6 @@ struct EmitterScratch {
 };
 
 }  // namespace
-
-std::vector<std::uint32_t> emitting_patches(const PatchMesh& patches,
-                                            std::span<const std::uint32_t> emitting_surfaces) {
-    std::uint32_t surfaces = 0;
-    for (const Patch& p : patches.patches) surfaces = std::max(surfaces, p.surface + 1);
-    std::vector<std::uint8_t> emits(surfaces, 0);
-    for (std::uint32_t s : emitting_surfaces) {
-        if (s < surfaces) emits[s] = 1;
-    }
-    std::vector<std::uint32_t> columns;
-    for (std::uint32_t p = 0; p < patches.size(); ++p) {
-        if (emits[patches.patches[p].surface]) columns.push_back(p);
-    }
-    return columns;
-}
-
-bool sample_emitter_columns(const PatchMesh& patches, std::span<const std::uint32_t> emitters) {
-    if (emitters.empty() || emitters.size() > kMaxSampledEmitterPatches) return false;
-    double total = 0.0, emitting = 0.0;
-    for (const Patch& p : patches.patches) total += p.area;
-    for (std::uint32_t e : emitters) emitting += patches.patches[e].area;
-    return emitting <= kMaxEmitterAreaShare * total;
-}
 
 std::vector<std::uint8_t> column_flags(std::size_t patch_count, std::span<const std::uint32_t> columns) {
     std::vector<std::uint8_t> flags(patch_count, 0);
@@ -88,8 +65,8 @@ RowFunction emitter_rows(std::vector<PatchShape> receivers, std::vector<std::uin
     const std::size_t budget = std::min<std::size_t>(
         static_cast<std::size_t>(std::max(hemisphere_rays, kEmitterShadowRays)), kEmitterShadowRays * count);
     const int draws = static_cast<int>(std::max<std::size_t>(1, budget / kRaysPerDraw));
-    return [&scene, shapes, own, set, scratch, offset, draws, seed](std::uint32_t i, std::vector<RowEntry>& entries,
-                                                                   RowStats& stats) {
+    return [&scene, shapes, own, set, scratch, offset, draws, seed](
+               std::uint32_t i, std::vector<RowEntry>& entries, RowStats& stats) {
         EmitterScratch& s = scratch->local();
         const PatchShape& pi = (*shapes)[i];
         const std::uint32_t skip = own->empty() ? i : (*own)[i];
@@ -98,7 +75,8 @@ RowFunction emitter_rows(std::vector<PatchShape> receivers, std::vector<std::uin
         double total = 0.0;
         for (std::size_t k = 0; k < n; ++k) {
             if (set->columns[k] == skip) continue;
-            s.weight[k] = set->luminance[k] * factor_weight(pi.centroid, pi.normal, pi.radius, set->shapes[k]);
+            s.weight[k] =
+                set->luminance[k] * factor_weight(pi.centroid, pi.normal, pi.radius, set->shapes[k]);
             total += s.weight[k];
         }
         if (!(total > 0.0)) return;

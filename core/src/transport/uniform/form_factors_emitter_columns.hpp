@@ -6,8 +6,9 @@
 
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/ray/ray_scene.hpp"
+#include "sampling/emitter_patches.hpp"
+#include "sampling/patch_shapes.hpp"
 #include "transport/uniform/form_factors_rows.hpp"
-#include "transport/uniform/patch_shapes.hpp"
 
 namespace rad {
 
@@ -29,19 +30,6 @@ namespace rad {
 // patches there are.
 inline constexpr int kEmitterShadowRays = 64;
 inline constexpr int kRaysPerDraw = 16;
-
-// Where the emitters are large (more than this share of the scene's area, as in a furnace) or so many that
-// the weights would cost more than the rays, the hemisphere rays meet them often enough: their columns stay
-// with the hemisphere estimator.
-inline constexpr double kMaxEmitterAreaShare = 0.5;
-inline constexpr std::size_t kMaxSampledEmitterPatches = 20'000;
-
-// The patches of the emitting surfaces, sorted.
-std::vector<std::uint32_t> emitting_patches(const PatchMesh& patches,
-                                            std::span<const std::uint32_t> emitting_surfaces);
-
-// Whether the emitters' columns are drawn by power (above) rather than left to the hemisphere rays.
-bool sample_emitter_columns(const PatchMesh& patches, std::span<const std::uint32_t> emitters);
 
 // One flag per patch: 1 for the listed columns.
 std::vector<std::uint8_t> column_flags(std::size_t patch_count, std::span<const std::uint32_t> columns);

@@ -1,4 +1,4 @@
-#include "transport/uniform/patch_shapes.hpp"
+#include "sampling/patch_shapes.hpp"
 
 #include <algorithm>
 #include <glm/geometric.hpp>

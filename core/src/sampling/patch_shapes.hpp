@@ -1,7 +1,7 @@
 #pragma once
 
-// Patches as polygons for the analytic estimators (every pair's, and the emitters' columns). Private to the
-// library.
+// Patches as polygons, for the analytic estimators (every pair's, the emitters' columns) and for drawing
+// light sources by power (the display's direct light). Private to the library.
 
 #include <vector>
 
