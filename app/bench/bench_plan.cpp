@@ -18,9 +18,8 @@ BenchPlan default_bench_plan(bool quick) {
         plan.comparison_sizes = {64};
         plan.comparison_max_spp = 16;
         plan.further_view_frames = 3;
-        plan.refined = {{Subdivision::adaptive, {0.5}},
-                        {Subdivision::hierarchical, {0.05}},
-                        {Subdivision::clustered, {0.1}}};
+        for (const TransportMethod& m : transport_methods())
+            if (m.quick_refine_tolerance > 0.0) plan.refined.push_back({m.id, {m.quick_refine_tolerance}});
         return plan;
     }
     plan.scenes.push_back("builtin:many-lights");
@@ -37,9 +36,9 @@ BenchPlan default_bench_plan(bool quick) {
     plan.reference_spp = 512;
     plan.comparison_sizes = {256, 1024};
     plan.comparison_max_spp = 1024;
-    plan.refined = {{Subdivision::adaptive, {0.25, 0.15}},
-                    {Subdivision::hierarchical, {0.1, 0.03, 0.01, 0.003}},
-                    {Subdivision::clustered, {0.2, 0.1, 0.05, 0.02}}};
+    for (const TransportMethod& m : transport_methods())
+        if (!m.refine_tolerances.empty())
+            plan.refined.push_back({m.id, {m.refine_tolerances.begin(), m.refine_tolerances.end()}});
     return plan;
 }
 

@@ -44,8 +44,8 @@ struct BenchPlan {
     std::vector<int> comparison_sizes;
     int comparison_max_spp = 0;    // the path tracer's search for radiosity's image error stops here
     int further_view_frames = 21;  // frames whose median time is a further view's cost
-    // Methods that refine their own elements, each at these --refine-tol values (default first or base
-    // patches and solver), per scene, in this order.
+    // The methods that refine their own elements (the table's entries with refinement tolerances), each at
+    // these --refine-tol values (default first or base patches and solver), per scene, in this order.
     std::vector<RefinedRuns> refined;
 };
 

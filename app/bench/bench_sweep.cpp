@@ -28,13 +28,20 @@ std::string format(const char* pattern, double value) {
     return text;
 }
 
+// The method whose meshes the sweep compares: the one `auto` takes for a small scene (a form-factor matrix,
+// which every solver can run on).
+const TransportMethod& mesh_method() {
+    return automatic_transport_method(0);
+}
+
 PipelineOptions pipeline_options(const std::string& scene, double patch_size, const EstimatorSetting& setting,
                                  const BenchPlan& plan) {
     PipelineOptions options;
     options.scene.scene = scene;
     options.scene.patch_size = patch_size;
-    // The meshes of the sweep are uniform; run_subdivided sets its own.
-    options.subdivision.method = subdivision_name(Subdivision::uniform);
+    // The meshes of the sweep are those of the method `auto` takes for small scenes; run_subdivided sets its
+    // own.
+    options.subdivision.method = std::string(mesh_method().name);
     options.form_factors.method = setting.method;
     options.form_factors.rays = setting.rays;
     options.solver.tolerance = plan.tolerance;
@@ -219,6 +226,7 @@ class SceneSweep {
         BenchRow row;
         row.solve_seconds = seconds_since(start);
         row.scene = scene_;
+        row.subdivision = std::string(subdivision_name(pipeline.subdivision()));
         row.patches = n;
         row.links = pipeline.transport().report().interactions;
         row.estimator = estimator_label(setting);

@@ -17,7 +17,7 @@ namespace rad {
 // not measured.
 struct BenchRow {
     std::string scene;
-    std::string subdivision = "uniform";
+    std::string subdivision;  // the transport method's name
     std::size_t patches = 0;
     std::size_t links = 0;  // form-factor nonzeros, or hierarchical links
     double patch_size = 0.0;

@@ -101,8 +101,7 @@ std::string leak_table(const std::vector<LeakRow>& rows) {
     }
     text +=
         "\nLeak: the brightest element looking into the closed interior (or the brightest pixel of a view "
-        "from "
-        "inside, as radiosity) over the mean radiosity of the lit elements outside; 0 is right.\n";
+        "from inside, as radiosity) over the mean radiosity of the lit elements outside; 0 is right.\n";
     return text;
 }
 

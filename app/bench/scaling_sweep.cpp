@@ -72,13 +72,18 @@ std::string format(const char* pattern, double value) {
 
 ScalingPlan default_scaling_plan(bool quick) {
     ScalingPlan plan;
-    if (quick) {
-        plan.faces = {"1k", "2k"};
-        plan.methods = {{Subdivision::clustered}, {Subdivision::uniform, 2'000}};
-        return plan;
+    plan.faces = quick ? std::vector<std::string>{"1k", "2k"}
+                       : std::vector<std::string>{"1k", "3k", "10k", "30k", "100k", "300k", "1m"};
+    // The methods `auto` chooses between: the one it takes at any size first, then those it takes up to a
+    // size, which run on the furnaces up to 100k faces (above, form factors take minutes and gigabytes).
+    const std::size_t limited_max_faces = quick ? 2'000 : 100'000;
+    const auto methods = transport_methods();
+    for (auto m = methods.rbegin(); m != methods.rend(); ++m) {
+        if (m->automatic_up_to == kAnySize)
+            plan.methods.insert(plan.methods.begin(), {m->id});
+        else if (m->automatic_up_to > 0)
+            plan.methods.push_back({m->id, limited_max_faces});
     }
-    plan.faces = {"1k", "3k", "10k", "30k", "100k", "300k", "1m"};
-    plan.methods = {{Subdivision::clustered}, {Subdivision::uniform, 100'000}};
     return plan;
 }
 

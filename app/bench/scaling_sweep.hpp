@@ -23,8 +23,8 @@ struct ScalingPlan {
     std::vector<ScalingMethod> methods;
 };
 
-// From 1k to 1M faces with clustering, and uniform patches to 100k (above, its form factors take minutes and
-// gigabytes), or 1k and 2k for the tests.
+// From 1k to 1M faces (1k and 2k for the tests) with the methods `auto` chooses between: the one for any size
+// at every size, the others to 100k faces (2k).
 ScalingPlan default_scaling_plan(bool quick);
 
 // One furnace solved one way. Seconds are the pipeline's stages: mesh (the scene made and meshed), build

@@ -148,7 +148,7 @@ class RadiosityPipeline {
     PipelineOptions options_;
     std::optional<SavedSolution> saved_;
     std::string saved_path_;
-    Subdivision subdivision_ = Subdivision::uniform;
+    Subdivision subdivision_ = Subdivision::automatic;  // the method, once the constructor has chosen it
     LoadedScene loaded_;
     Sky opened_sky_;  // the scene's sky and sun as opened, which an empty edit returns to
     Sun opened_sun_;

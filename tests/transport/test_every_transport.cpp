@@ -195,6 +195,10 @@ TEST(TransportMethods, TheTableIsConsistent) {
         EXPECT_NE(m.build, nullptr) << m.name;
         EXPECT_GE(m.base_patch_scale, 1.0) << m.name;
         EXPECT_FALSE(m.help.empty()) << m.name;
+        // A method refines with both a sweep of tolerances, coarse to fine, and a quick one, or with neither.
+        EXPECT_EQ(m.refine_tolerances.empty(), m.quick_refine_tolerance == 0.0) << m.name;
+        for (std::size_t k = 1; k < m.refine_tolerances.size(); ++k)
+            EXPECT_LT(m.refine_tolerances[k], m.refine_tolerances[k - 1]) << m.name;
         if (m.automatic_up_to == 0) continue;
         EXPECT_GT(m.automatic_up_to, previous_limit) << m.name;
         previous_limit = m.automatic_up_to;

@@ -20,6 +20,12 @@ constexpr double kHierarchyBaseScale = 4.0;
 // Hierarchical radiosity links every pair of base patches first: past this many, minutes.
 constexpr std::size_t kHierarchicalPracticalBasePatches = 5'000;
 
+// The refinement tolerances the bench compares, coarse to fine, around each method's default (adaptive 0.15,
+// hierarchical 0.02, clustered 0.05).
+constexpr double kAdaptiveTolerances[] = {0.25, 0.15};
+constexpr double kHierarchicalTolerances[] = {0.1, 0.03, 0.01, 0.003};
+constexpr double kClusteredTolerances[] = {0.2, 0.1, 0.05, 0.02};
+
 const TransportMethod kMethods[] = {
     {.id = Subdivision::uniform,
      .name = "uniform",
@@ -32,6 +38,8 @@ const TransportMethod kMethods[] = {
      .help = "split where the light changes, then solved again",
      .base_patch_scale = kAdaptiveBaseScale,
      .has_matrix = true,
+     .refine_tolerances = kAdaptiveTolerances,
+     .quick_refine_tolerance = 0.5,
      .build = build_adaptive_method},
     {.id = Subdivision::hierarchical,
      .name = "hierarchical",
@@ -39,6 +47,8 @@ const TransportMethod kMethods[] = {
      .base_patch_scale = kHierarchyBaseScale,
      .drawn_on_uniform_patches = true,
      .practical_base_patches = kHierarchicalPracticalBasePatches,
+     .refine_tolerances = kHierarchicalTolerances,
+     .quick_refine_tolerance = 0.05,
      .build = build_hierarchical_method},
     {.id = Subdivision::clustered,
      .name = "clustered",
@@ -46,6 +56,8 @@ const TransportMethod kMethods[] = {
      .base_patch_scale = kHierarchyBaseScale,
      .drawn_on_uniform_patches = true,
      .automatic_up_to = kAnySize,
+     .refine_tolerances = kClusteredTolerances,
+     .quick_refine_tolerance = 0.1,
      .build = build_clustered_method},
 };
 

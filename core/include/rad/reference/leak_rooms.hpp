@@ -27,9 +27,10 @@ std::span<const LeakRoom> leak_rooms();
 
 // The light in the interior against the light outside.
 struct Leak {
-    double worst_inside = 0.0;  // the largest radiosity (any channel) of an element looking into the interior
-    double lit_mean =
-        0.0;  // the area-weighted mean luminance radiosity of the lit elements that emit nothing
+    // The largest radiosity (any channel) of an element looking into the interior.
+    double worst_inside = 0.0;
+    // The area-weighted mean luminance radiosity of the lit elements that emit nothing.
+    double lit_mean = 0.0;
     std::size_t inside = 0;  // the elements looking into the interior
     double ratio() const { return lit_mean > 0.0 ? worst_inside / lit_mean : 0.0; }
 };

@@ -19,7 +19,7 @@ struct TransportSettings;
 class Progress;
 
 // The methods by name, for code and files that name one; `automatic` is no method but the request to choose
-// one (choose_transport_method).
+// one (automatic_transport_method, choose_subdivision).
 enum class Subdivision { automatic, uniform, adaptive, hierarchical, clustered };
 
 // Builds the method's transport over `base`, meshed at the method's base_patch_scale. Throws InputError for
@@ -50,13 +50,17 @@ struct TransportMethod {
     // Past this many base patches its first pass takes too long to be worth trying (every pair of base
     // patches is linked first); kAnySize: no such bound.
     std::size_t practical_base_patches = kAnySize;
+    // The --refine-tol values worth comparing, coarse to fine (the bench sweeps them), and a coarse one for a
+    // quick look; empty and 0 for a method that does not refine its elements.
+    std::span<const double> refine_tolerances{};
+    double quick_refine_tolerance = 0.0;
     BuildTransport build = nullptr;
 };
 
 // Every method, in the order `auto` tries them and lists show them.
 std::span<const TransportMethod> transport_methods();
 
-// The entry of a method; `automatic` must be chosen first (choose_transport_method).
+// The entry of a method; `automatic` must be chosen first (choose_subdivision).
 const TransportMethod& transport_method(Subdivision id);
 // The entry named `name`, or nullptr.
 const TransportMethod* find_transport_method(std::string_view name);
