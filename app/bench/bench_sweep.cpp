@@ -13,6 +13,7 @@
 #include "rad/camera/camera_view.hpp"
 #include "rad/reference/image_error.hpp"
 #include "rad/reference/path_tracer.hpp"
+#include "rad/transport/uniform/uniform_transport.hpp"
 
 namespace rad {
 
@@ -77,10 +78,10 @@ struct PatchReference {
 
 PatchReference patch_reference(const LoadedScene& loaded, const BenchPlan& plan) {
     PatchReference reference;
-    const std::size_t n = loaded.patches.size();
+    const std::size_t n = loaded.patches->size();
     reference.paths_per_patch = static_cast<int>(
         std::max<std::size_t>(plan.min_paths_per_patch, plan.reference_paths / std::max<std::size_t>(n, 1)));
-    const PathTracer tracer(loaded.scene, loaded.patches);
+    const PathTracer tracer(loaded.scene, *loaded.patches);
     PathTracerStats stats;
     const std::vector<Estimate> estimates = tracer.patch_radiosity(reference.paths_per_patch, &stats);
     std::vector<glm::dvec3> errors;
@@ -88,7 +89,7 @@ PatchReference patch_reference(const LoadedScene& loaded, const BenchPlan& plan)
         reference.radiosity.push_back(e.mean);
         errors.push_back(e.mean + e.standard_error);
     }
-    reference.noise = relative_rms_difference(loaded.patches, errors, reference.radiosity);
+    reference.noise = relative_rms_difference(*loaded.patches, errors, reference.radiosity);
     reference.seconds = stats.seconds;
     return reference;
 }
@@ -131,7 +132,7 @@ class SceneSweep {
     ReferenceImage render_reference(const LoadedScene& loaded, int size, int spp, std::uint64_t seed) const {
         PathTracerOptions options;
         options.seed = seed;
-        return PathTracer(loaded.scene, loaded.patches, options).render(camera_, size, size, spp);
+        return PathTracer(loaded.scene, *loaded.patches, options).render(camera_, size, size, spp);
     }
 
     void run_level(double patch_size, bool is_default_size) {
@@ -139,7 +140,7 @@ class SceneSweep {
         for (std::size_t e = 0; e < plan_.estimators.size(); ++e) {
             const EstimatorSetting& setting = plan_.estimators[e];
             RadiosityPipeline pipeline(pipeline_options(scene_, patch_size, setting, plan_));
-            const std::size_t n = pipeline.loaded().patches.size();
+            const std::size_t n = pipeline.loaded().patches->size();
             if (setting.method == FormFactorMethod::analytic && n > plan_.analytic_max_patches) continue;
             if (!reference) {
                 reference = patch_reference(pipeline.loaded(), plan_);
@@ -180,9 +181,9 @@ class SceneSweep {
         RadiosityPipeline pipeline(options);
         // A method whose first pass links every pair of base patches is skipped past its practical size (a
         // furnished room's 30,000 base patches took hierarchical radiosity over 15 minutes).
-        if (pipeline.loaded().patches.size() > transport.practical_base_patches) {
+        if (pipeline.loaded().patches->size() > transport.practical_base_patches) {
             results_.notes.push_back(scene_ + ": " + method + " not run, " +
-                                     std::to_string(pipeline.loaded().patches.size()) +
+                                     std::to_string(pipeline.loaded().patches->size()) +
                                      " base patches (its first links are every pair of them)");
             return;
         }
@@ -219,7 +220,7 @@ class SceneSweep {
         SolverCommandOptions command;
         command.method = std::string(solver_method_name(method));
         command.tolerance = plan_.tolerance;
-        const std::size_t n = pipeline.loaded().patches.size();
+        const std::size_t n = pipeline.loaded().patches->size();
         const auto start = std::chrono::steady_clock::now();
         pipeline.restart_solver(method, solver_options(command, n));
         const StepReport& report = pipeline.solve();
@@ -236,11 +237,11 @@ class SceneSweep {
         row.mesh_seconds = pipeline.seconds().mesh;
         row.form_factor_seconds = pipeline.seconds().form_factors;
         const std::span<const glm::dvec3> solution = pipeline.solver().solution();
-        row.solver_error = relative_rms_difference(pipeline.loaded().patches, solution, converged);
+        row.solver_error = relative_rms_difference(*pipeline.loaded().patches, solution, converged);
         // The path tracer averages over whole patches, covered parts included.
         const std::vector<glm::dvec3> whole =
-            whole_patch_radiosity(pipeline.transport(), pipeline.loaded().patches, solution);
-        row.total_error = relative_rms_difference(pipeline.loaded().patches, whole, reference.radiosity);
+            whole_patch_radiosity(pipeline.transport(), *pipeline.loaded().patches, solution);
+        row.total_error = relative_rms_difference(*pipeline.loaded().patches, whole, reference.radiosity);
         row.reference_noise = reference.noise;
         const auto render_start = std::chrono::steady_clock::now();
         pipeline.display();

@@ -42,7 +42,7 @@ ScalingRow run_furnace(const std::string& spelled, Subdivision method, bool& pea
     try {
         RadiosityPipeline pipeline(options);
         for (const Surface& s : pipeline.loaded().scene.surfaces) row.faces += s.mesh.n_faces();
-        row.patches = pipeline.loaded().patches.size();
+        row.patches = pipeline.loaded().patches->size();
         const StepReport& report = pipeline.solve();
         const TransportReport transport = pipeline.transport().report();
         row.elements = transport.elements;

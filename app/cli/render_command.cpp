@@ -197,27 +197,16 @@ int run_render(RenderOptions options, const CLI::App& command) {
     if (options.path_traced > 0) return write_path_traced(options, *pipeline, cameras, reference);
 
     // A saved solution is drawn as saved; a scene is solved once for every camera.
-    StepReport report;
-    std::string status_message;
-    if (const SavedSolution* from = pipeline->saved()) {
-        report.step = from->report.steps;
-        report.residual = from->report.residual;
-        for (SolverStatus s : {SolverStatus::running, SolverStatus::converged, SolverStatus::iteration_limit,
-                               SolverStatus::diverged, SolverStatus::not_converging}) {
-            if (solver_status_name(s) == from->report.status) report.status = s;
-        }
-        status_message = from->report.status_message;
-    } else {
+    if (!pipeline->has_solution()) {
         Progress progress;
-        {
-            const ProgressBar bar(progress);
-            report = pipeline->solve(&progress);
-        }
-        status_message = pipeline->solver().status_message();
+        const ProgressBar bar(progress);
+        pipeline->solve(&progress);
     }
-    if (report.status == SolverStatus::diverged || report.status == SolverStatus::not_converging) {
-        std::cerr << "radiosity: failed: the solver " << solver_status_name(report.status) << ": "
-                  << status_message << '\n';
+    const SolutionReport& report = pipeline->solution().report;
+    if (report.status == solver_status_name(SolverStatus::diverged) ||
+        report.status == solver_status_name(SolverStatus::not_converging)) {
+        std::cerr << "radiosity: failed: the solver " << report.status << ": " << report.status_message
+                  << '\n';
         return 1;
     }
     const Stopwatch render_clock;
@@ -241,20 +230,19 @@ int run_render(RenderOptions options, const CLI::App& command) {
     }
     const double render_seconds = render_clock.seconds();
 
-    const std::string method =
-        saved ? pipeline->saved()->settings.solver : std::string(solver_method_name(pipeline->method()));
+    const std::string& method = pipeline->solution().settings.solver;
     if (saved) {
         std::printf(
             "%zu patches, saved solution of %s (%s: %zu steps, residual %.3g); seconds: load %.3f, "
             "render %.3f (%s)\n",
-            pipeline->patches().size(), pipeline->loaded().scene.source.c_str(), method.c_str(), report.step,
+            pipeline->patches().size(), pipeline->loaded().scene.source.c_str(), method.c_str(), report.steps,
             report.residual, load_seconds, render_seconds, context.description().c_str());
     } else {
         const StageSeconds& s = pipeline->seconds();
         std::printf(
             "%zu patches, %s: %zu steps, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f, "
             "render %.3f (%s)\n",
-            pipeline->patches().size(), method.c_str(), report.step, report.residual, s.mesh, s.form_factors,
+            pipeline->patches().size(), method.c_str(), report.steps, report.residual, s.mesh, s.form_factors,
             s.solve, render_seconds, context.description().c_str());
     }
     const bool png = lowercase_extension(options.out) == ".png";

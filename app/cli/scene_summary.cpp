@@ -23,7 +23,7 @@ std::string point(const glm::dvec3& p) {
 
 void print_scene_summary(std::ostream& out, const LoadedScene& loaded) {
     const Scene& scene = loaded.scene;
-    const PatchMesh& patches = loaded.patches;
+    const PatchMesh& patches = *loaded.patches;
     char line[256];
     out << "scene: " << scene.source << '\n';
     out << "surfaces: " << scene.surfaces.size() << '\n';

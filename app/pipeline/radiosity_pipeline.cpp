@@ -5,10 +5,9 @@
 
 #include "pipeline/form_factor_options.hpp"
 #include "pipeline/outside_light_options.hpp"
-#include "pipeline/solution_display.hpp"
-#include "rad/display/vertex_direct_light.hpp"
+#include "rad/display/solution_display.hpp"
 #include "rad/mesh/patch_albedo.hpp"
-#include "rad/ray/ray_scene.hpp"
+#include "rad/transport/scene_transport.hpp"
 #include "rad/transport/source_update.hpp"
 #include "rad/util/error.hpp"
 #include "rad/util/stopwatch.hpp"
@@ -31,7 +30,7 @@ RadiosityPipeline::RadiosityPipeline(const PipelineOptions& options) : options_(
         loaded_ = load_and_mesh(options.scene, transport_method(subdivision_).base_patch_scale);
     }
     seconds_.mesh = clock.seconds();
-    solver_options_ = rad::solver_options(options.solver, loaded_.patches.size());
+    solver_options_ = rad::solver_options(options.solver, loaded_.patches->size());
     opened_sky_ = loaded_.scene.sky;
     opened_sun_ = loaded_.scene.sun;
 }
@@ -45,7 +44,7 @@ void RadiosityPipeline::choose_automatic_subdivision() {
     const bool meshed = method->automatic_up_to != kAnySize;
     if (meshed) {
         mesh_loaded(loaded_, options_.scene, 1.0);
-        method = &automatic_transport_method(loaded_.patches.size());
+        method = &automatic_transport_method(loaded_.patches->size());
     }
     subdivision_ = method->id;
     options_.subdivision.method = std::string(method->name);
@@ -55,7 +54,7 @@ void RadiosityPipeline::choose_automatic_subdivision() {
         mesh_loaded(loaded_, options_.scene, method->base_patch_scale);
 }
 
-PipelineOptions options_from_saved(const SavedSettings& s, const PipelineOptions& base) {
+PipelineOptions options_from_solution(const SolutionSettings& s, const PipelineOptions& base) {
     PipelineOptions options = base;
     options.scene.scene = s.scene_source;
     options.scene.patch_size = s.patch_size;
@@ -78,14 +77,14 @@ PipelineOptions options_from_saved(const SavedSettings& s, const PipelineOptions
 
 RadiosityPipeline::RadiosityPipeline(SavedSolution saved, const std::string& path,
                                      const DisplayOptions& display)
-    : saved_path_(path) {
-    const SavedSettings& s = saved.settings;
-    options_ = options_from_saved(s, options_);
+    : opened_path_(path) {
+    const SolutionSettings& s = saved.solution.settings;
+    options_ = options_from_solution(s, options_);
     options_.display = display;
     try {
         subdivision_ = parse_subdivision(s.subdivision);
         method_ = solver_method(options_.solver);
-        solver_options_ = rad::solver_options(options_.solver, saved.size());
+        solver_options_ = rad::solver_options(options_.solver, saved.solution.size());
         check_solver_options(solver_options_);
     } catch (const InputError& e) {
         throw InputError(path + ": the saved settings are unusable: " + e.what());
@@ -95,13 +94,13 @@ RadiosityPipeline::RadiosityPipeline(SavedSolution saved, const std::string& pat
     opened_sky_ = loaded_.scene.sky;
     opened_sun_ = loaded_.scene.sun;
     // The base patches are made again only when the transport is rebuilt.
-    saved.scene = Scene{};
-    saved_ = std::move(saved);
+    solution_ = std::move(saved.solution);
+    traced_display_gather_ = std::move(saved.display_gather);
+    continues_solution_ = true;
 }
 
-SavedSolution RadiosityPipeline::saved_solution() const {
-    SavedSolution saved;
-    SavedSettings& s = saved.settings;
+SolutionSettings RadiosityPipeline::solution_settings() const {
+    SolutionSettings s;
     s.scene_source = loaded_.scene.source;
     s.patch_size = loaded_.patch_size;
     s.subdivision = subdivision_name(subdivision_);
@@ -118,42 +117,60 @@ SavedSolution RadiosityPipeline::saved_solution() const {
     s.bounces = options_.solver.bounces;
     s.initial = options_.solver.initial;
     s.relaxation = options_.solver.relaxation;
-    saved.scene = loaded_.scene;
+    return s;
+}
+
+SavedSolution RadiosityPipeline::saved_solution() const {
+    SavedSolution saved{.scene = loaded_.scene, .solution = solution(), .display_gather = {}};
     saved.scene.warnings.clear();
-    saved.patches = patches();
-    const Transport& t = transport();
-    saved.area = t.area;
-    saved.reflectance = t.reflectance;
-    saved.emission = t.emission;
-    saved.solution.assign(solver_->solution().begin(), solver_->solution().end());
-    saved.display_solution = solver_->display_solution();
-    saved.direct = element_direct();
     // The display patches' own gather is the display's longest part; kept, opening the file skips it.
-    const SolvedPatches solved{.mesh = &patches(),
-                               .area = t.area,
-                               .reflectance = t.reflectance,
-                               .emission = t.emission,
-                               .direct = saved.direct};
-    saved.display_gather = display_patch_gather_table(
-        loaded_.scene, solved,
-        {.options = {}, .display_patch_size = display_patch_size(), .seed = options_.form_factors.seed});
-    const StepReport& report = solver_->report();
-    saved.report.steps = report.step;
-    saved.report.residual = report.residual;
-    saved.report.status = solver_status_name(report.status);
-    saved.report.status_message = solver_->status_message();
+    saved.display_gather = display_patch_gather_table(loaded_.scene, saved.solution);
     return saved;
+}
+
+const Solution& RadiosityPipeline::solution() const {
+    if (!elements_current_ && solver_) {
+        const Transport& t = *built_->transport;
+        solution_.area = t.area;
+        solution_.reflectance = t.reflectance;
+        solution_.emission = t.emission;
+        solution_.direct = element_direct();
+        elements_current_ = true;
+    }
+    if (!radiosity_current_ && solver_) {
+        solution_.settings = solution_settings();
+        solution_.radiosity.assign(solver_->solution().begin(), solver_->solution().end());
+        solution_.shown_radiosity = solver_->display_solution();
+        const StepReport& report = solver_->report();
+        solution_.report = {.steps = report.step,
+                            .residual = report.residual,
+                            .status = std::string(solver_status_name(report.status)),
+                            .status_message = solver_->status_message()};
+        radiosity_current_ = true;
+    }
+    return solution_;
+}
+
+void RadiosityPipeline::solver_changed() {
+    radiosity_current_ = false;
+}
+
+void RadiosityPipeline::take_elements() {
+    // The elements are the base patches (uniform transport) or owned by the transport built over them.
+    solution_.elements = built_->patches == loaded_.patches.get()
+                             ? loaded_.patches
+                             : std::shared_ptr<const PatchMesh>(built_, built_->patches);
+    // Their arrays are copied when the solution is asked for, so a solve that is not shown never pays.
+    elements_current_ = false;
+    solver_changed();
 }
 
 TransportSettings RadiosityPipeline::transport_settings() const {
     TransportSettings settings;
     settings.subdivision = subdivision_;
     settings.form_factors = form_factor_options_for(options_.form_factors, loaded_);
-    settings.adaptive = adaptive_options(options_.subdivision, options_.form_factors.seed);
-    settings.hierarchical =
-        hierarchical_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
-    settings.clustered =
-        clustered_options(options_.subdivision, options_.form_factors.rays, options_.form_factors.seed);
+    settings.refine_tolerance = options_.subdivision.tolerance;
+    settings.min_patch_size = options_.subdivision.min_patch_size;
     // An automatic choice solves the passes by bounces; the final solver is chosen once the transport is
     // known.
     settings.pass_method = method_;
@@ -164,37 +181,43 @@ TransportSettings RadiosityPipeline::transport_settings() const {
 void RadiosityPipeline::prepare(Progress* progress) {
     if (solver_) return;
     const Stopwatch clock;
-    if (saved_ && loaded_.patches.size() == 0) {
+    if (!loaded_.patches) {
         MeshingOptions meshing;
         meshing.patch_size = loaded_.patch_size;
-        loaded_.patches = build_patches(loaded_.scene, meshing);
+        loaded_.patches = std::make_shared<const PatchMesh>(build_patches(loaded_.scene, meshing));
     }
-    built_ = build_scene_transport(loaded_.scene, loaded_.patches, transport_settings(), progress);
+    built_ = std::make_shared<SceneTransport>(
+        build_scene_transport(loaded_.scene, *loaded_.patches, transport_settings(), progress));
     seconds_.form_factors = clock.seconds();
-    work_.form_factor_passes += built_.transport->report().form_factor_passes;
+    work_.form_factor_passes += built_->transport->report().form_factor_passes;
     display_.reset();
-    solver_options_ = rad::solver_options(options_.solver, patches().size());
-    if (automatic_method(options_.solver)) method_ = recommended_method(*built_.transport, solver_options_);
+    // The rebuilt transport must be the one the solution was solved on: same elements, same corners.
+    if (continues_solution_) continue_from_solution();
+    solver_options_ = rad::solver_options(options_.solver, built_->patches->size());
+    if (automatic_method(options_.solver)) method_ = recommended_method(*built_->transport, solver_options_);
     // Adaptive subdivision's last pass was solved already, but a fresh solver from B = E is what stepping
     // bounces shows.
-    if (saved_) continue_saved();
-    solver_ = make_solver(method_, *built_.transport, solver_options_);
+    if (continues_solution_) {
+        solver_options_.initial = InitialGuess::given;
+        solver_options_.given = solution_.radiosity;
+        // Southwell's unshot radiosity is not saved, so it cannot continue; jacobi can, from any radiosity.
+        if (method_ == SolverMethod::southwell) {
+            method_ = SolverMethod::jacobi;
+            solver_options_.max_steps = options_.solver.bounces;
+        }
+        continues_solution_ = false;
+    }
+    traced_display_gather_ = {};
+    solver_ = make_solver(method_, *built_->transport, solver_options_);
+    take_elements();
 }
 
-void RadiosityPipeline::continue_saved() {
-    // The rebuilt transport must be the one the solution was solved on: same elements, same corners.
-    const PatchMesh& rebuilt = patches();
-    if (rebuilt.size() != saved_->size() || rebuilt.points != saved_->patches.points) {
-        throw InputError(saved_path_ + ": the transport rebuilt from the saved scene and settings has " +
+void RadiosityPipeline::continue_from_solution() {
+    const PatchMesh& rebuilt = *built_->patches;
+    if (rebuilt.size() != solution_.size() || rebuilt.points != solution_.elements->points) {
+        throw InputError(opened_path_ + ": the transport rebuilt from the saved scene and settings has " +
                          std::to_string(rebuilt.size()) + " elements, not the saved " +
-                         std::to_string(saved_->size()) + " (saved by another version of the program?)");
-    }
-    solver_options_.initial = InitialGuess::given;
-    solver_options_.given = saved_->solution;
-    // Southwell's unshot radiosity is not saved, so it cannot continue; jacobi can, from any radiosity.
-    if (method_ == SolverMethod::southwell) {
-        method_ = SolverMethod::jacobi;
-        solver_options_.max_steps = options_.solver.bounces;
+                         std::to_string(solution_.size()) + " (saved by another version of the program?)");
     }
 }
 
@@ -202,6 +225,7 @@ StepReport RadiosityPipeline::step() {
     prepare();
     const Stopwatch clock;
     const StepReport report = solver_->step();
+    solver_changed();
     ++work_.solver_steps;
     seconds_.solve += clock.seconds();
     return report;
@@ -214,6 +238,7 @@ const StepReport& RadiosityPipeline::solve(Progress* progress) {
     const Stopwatch clock;
     const std::size_t steps_before = solver_->report().step;
     run_to_end(*solver_, progress);
+    solver_changed();
     work_.solver_steps += solver_->report().step - steps_before;
     seconds_.solve += clock.seconds();
     return solver_->report();
@@ -221,9 +246,10 @@ const StepReport& RadiosityPipeline::solve(Progress* progress) {
 
 void RadiosityPipeline::restart_solver(SolverMethod method, const SolverOptions& options) {
     prepare();
-    solver_ = make_solver(method, *built_.transport, options);
+    solver_ = make_solver(method, *built_->transport, options);
     method_ = method;
     solver_options_ = options;
+    solver_changed();
 }
 
 void RadiosityPipeline::edit_material(const std::string& name, const glm::dvec3& reflectance,
@@ -241,7 +267,8 @@ void RadiosityPipeline::edit_material(const std::string& name, const glm::dvec3&
         surface->material.reflectance = material.reflectance;
         surface->material.emission = material.emission;
     }
-    update_element_materials(*built_.transport, patches(), loaded_.scene);
+    update_element_materials(*built_->transport, patches(), loaded_.scene);
+    take_elements();
     restart_from_solution();
 }
 
@@ -257,7 +284,7 @@ void RadiosityPipeline::edit_outside_light(const std::string& sky, const std::st
     scene.sky = new_sky;
     scene.sun = new_sun;
     try {
-        update_outside_light(*built_.transport, patches(), scene, options_.form_factors.seed, progress);
+        update_outside_light(*built_->transport, patches(), scene, options_.form_factors.seed, progress);
     } catch (...) {
         scene.sky = old_sky;
         scene.sun = old_sun;
@@ -265,6 +292,7 @@ void RadiosityPipeline::edit_outside_light(const std::string& sky, const std::st
     }
     options_.scene.sky = sky;
     options_.scene.sun = sun;
+    take_elements();
     restart_from_solution();
 }
 
@@ -277,8 +305,9 @@ void RadiosityPipeline::restart_from_solution() {
         method_ = SolverMethod::jacobi;
         options.max_steps = options_.solver.bounces;
     }
-    solver_ = make_solver(method_, *built_.transport, options);
+    solver_ = make_solver(method_, *built_->transport, options);
     solver_options_ = std::move(options);
+    solver_changed();
     display_.reset();
 }
 
@@ -288,8 +317,8 @@ const DisplayMesh& RadiosityPipeline::display() const {
 }
 
 std::vector<glm::dvec3> RadiosityPipeline::element_direct() const {
-    const Transport& t = *built_.transport;
-    const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, patches());
+    const Transport& t = *built_->transport;
+    const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, *built_->patches);
     std::vector<glm::dvec3> direct(t.size());
     t.gather(emitted, direct);
     for (std::size_t q = 0; q < direct.size(); ++q) direct[q] *= t.reflectance[q];
@@ -301,78 +330,31 @@ void RadiosityPipeline::prepare_display(Progress* progress) const {
 }
 
 DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Progress* progress) const {
-    if (!built_.transport && !saved_) {
-        DisplayMesh display = build_display_mesh(patches(), options, display_texturing());
-        if (options.mode == ColourMode::smooth && options.direct_light_at_vertices)
-            add_preview_direct_light(display);
-        return display;
+    if (has_solution()) {
+        const GatherTable* traced = traced_display_gather_.empty() ? nullptr : &traced_display_gather_;
+        return build_solution_display(loaded_.scene, solution(), options, traced, progress);
     }
-    std::vector<glm::dvec3> direct;
-    SolvedPatches solved{.mesh = &patches()};
-    if (built_.transport) {
-        const Transport& t = *built_.transport;
-        direct = element_direct();
-        solved.area = t.area;
-        solved.reflectance = t.reflectance;
-        solved.emission = t.emission;
-        solved.direct = direct;
-    } else {
-        solved.area = saved_->area;
-        solved.reflectance = saved_->reflectance;
-        solved.emission = saved_->emission;
-        solved.direct = saved_->direct;
-        if (!saved_->display_gather.empty()) solved.patch_gather = &saved_->display_gather;
-    }
-    const SolutionDisplaySettings settings{
-        .options = options, .display_patch_size = display_patch_size(), .seed = options_.form_factors.seed};
-    return build_solution_display(loaded_.scene, solved, settings, progress);
-}
-
-double RadiosityPipeline::display_patch_size() const {
-    const TransportMethod& method = transport_method(subdivision_);
-    return method.drawn_on_uniform_patches ? loaded_.patch_size / method.base_patch_scale : 0.0;
-}
-
-void RadiosityPipeline::add_preview_direct_light(DisplayMesh& display) const {
-    const PatchMesh& mesh = patches();
-    const std::vector<glm::dvec3> emitted = emitted_radiosity(loaded_.scene, mesh);
-    if (!draws_vertex_direct_light(mesh, emitted)) return;
-    const RayScene rays(mesh);
-    // No patch holds any of the light yet: each vertex keeps its own value.
-    const std::vector<glm::dvec3> direct(mesh.size(), glm::dvec3(0.0));
-    std::vector<double> area(mesh.size());
-    for (std::size_t q = 0; q < mesh.size(); ++q) area[q] = mesh.patches[q].area;
-    add_vertex_direct_light(display, {.patches = &mesh,
-                                      .rays = &rays,
-                                      .emitted = emitted,
-                                      .emission = emitted,
-                                      .reflectance = display_texturing().reflectance,
-                                      .area = area,
-                                      .patch_direct = direct,
-                                      .seed = options_.form_factors.seed,
-                                      .keep_patch_means = false});
+    if (loaded_albedo_.size() != loaded_.patches->size())
+        loaded_albedo_ = patch_albedo(loaded_.scene, *loaded_.patches);
+    return build_preview_display(loaded_.scene, *loaded_.patches, options, loaded_albedo_,
+                                 options_.form_factors.seed);
 }
 
 std::vector<glm::dvec3> RadiosityPipeline::preview_radiosity() const {
     return emitted_radiosity(loaded_.scene, patches());
 }
 
-DisplayTexturing RadiosityPipeline::display_texturing() const {
-    if (built_.transport) return {&loaded_.scene, built_.transport->reflectance};
-    if (saved_) return {&loaded_.scene, saved_->reflectance};
-    if (loaded_albedo_.size() != loaded_.patches.size())
-        loaded_albedo_ = patch_albedo(loaded_.scene, loaded_.patches);
-    return {&loaded_.scene, loaded_albedo_};
+const Transport& RadiosityPipeline::transport() const {
+    return *built_->transport;
 }
 
 EnergyBalance RadiosityPipeline::energy_balance() const {
-    return rad::energy_balance(*built_.transport, solver_->solution());
+    return rad::energy_balance(*built_->transport, solver_->solution());
 }
 
 std::vector<glm::vec3> RadiosityPipeline::vertex_radiance() const {
-    if (!solver_ && saved_) return rad::vertex_radiance(display(), saved_->display_solution);
-    if (!solver_) return std::vector<glm::vec3>(display().vertex_count(), glm::vec3(0.0f));
-    return rad::vertex_radiance(display(), solver_->display_solution());
+    if (!has_solution()) return std::vector<glm::vec3>(display().vertex_count(), glm::vec3(0.0f));
+    return rad::vertex_radiance(display(), solution().shown_radiosity);
 }
 
 }  // namespace rad

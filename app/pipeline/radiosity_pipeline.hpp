@@ -9,12 +9,19 @@
 #include "pipeline/solver_options.hpp"
 #include "pipeline/subdivision_options.hpp"
 #include "rad/display/display_mesh.hpp"
+#include "rad/display/gather_table.hpp"
 #include "rad/io/saved_solution.hpp"
+#include "rad/solve/solution.hpp"
 #include "rad/solve/solver.hpp"
-#include "rad/transport/scene_transport.hpp"
+#include "rad/transport/transport.hpp"
+#include "rad/transport/transport_methods.hpp"
+#include "rad/transport/uniform/form_factors.hpp"
 #include "rad/util/progress.hpp"
 
 namespace rad {
+
+struct SceneTransport;
+struct TransportSettings;
 
 // The options of every command that solves a scene (solve, render, view, bench), registered together.
 struct PipelineOptions {
@@ -39,21 +46,21 @@ struct StageSeconds {
 
 // From a meshed scene to radiance per display vertex: the transport built once, then the solver stepped by
 // the caller (or to the end), and the display mesh built once. The viewer steps it; the commands run it
-// through. It never asks which kind of transport it holds.
-// The options a saved solution was solved with, over `base` (what the file does not hold: the memory
-// budget, the display, the threads).
-PipelineOptions options_from_saved(const SavedSettings& settings, const PipelineOptions& base);
+// through. It never asks which kind of transport it holds, nor where its solution came from: a solution
+// just solved and one opened from a file are the same Solution, drawn by the same display builder.
+// The options a solution was solved with, over `base` (what the solution does not hold: the memory budget,
+// the display, the threads).
+PipelineOptions options_from_solution(const SolutionSettings& settings, const PipelineOptions& base);
 
 class RadiosityPipeline {
   public:
     // Loads and meshes the scene (for hierarchical radiosity, into base patches). Throws InputError for bad
     // input or options.
     explicit RadiosityPipeline(const PipelineOptions& options);
-    // From a saved solution (read from `path`, named in errors): patches(), display() and vertex_radiance()
-    // show the saved state at once, with no transport. prepare() rebuilds the transport from the saved scene
-    // and settings (it is not saved) and the solver continues from the saved radiosity (southwell's by
-    // jacobi, as southwell cannot start from a given radiosity). Throws InputError naming the file when the
-    // settings cannot be used.
+    // From a saved solution (read from `path`, named in errors): it is the solution shown at once, with no
+    // transport. prepare() rebuilds the transport from the saved scene and settings (it is not saved) and the
+    // solver continues from the saved radiosity (southwell's by jacobi, as southwell cannot start from a
+    // given radiosity). Throws InputError naming the file when the settings cannot be used.
     RadiosityPipeline(SavedSolution saved, const std::string& path, const DisplayOptions& display = {});
 
     // Builds the transport (form factors, adaptive passes or hierarchical links) and makes the solver; does
@@ -84,34 +91,26 @@ class RadiosityPipeline {
     void edit_outside_light(const std::string& sky, const std::string& sun, Progress* progress = nullptr);
 
     const LoadedScene& loaded() const { return loaded_; }
-    // The patches the solution belongs to: the meshed scene's, or after prepare the adaptive or
-    // hierarchical leaves.
-    const PatchMesh& patches() const {
-        if (built_.patches) return *built_.patches;
-        return saved_ ? saved_->patches : loaded_.patches;
-    }
+    // The patches the solution belongs to (its elements: the meshed scene's, or after prepare the adaptive or
+    // hierarchical leaves), or before there is a solution the meshed scene's.
+    const PatchMesh& patches() const { return solution_.elements ? *solution_.elements : *loaded_.patches; }
     Subdivision subdivision() const { return subdivision_; }
+    // Whether there is a solution to show: after prepare, or opened from a file. Before, the display is a
+    // preview: the emission (preview_radiosity) and the emitters' direct light at the vertices.
+    bool has_solution() const { return solution_.elements != nullptr; }
+    // The solution as it stands (has_solution()): the solver's, or the file's until prepare.
+    const Solution& solution() const;
     // Built on first use, so `solve` never pays for it.
     const DisplayMesh& display() const;
-    // A display of the solution with these options (build_solution_display): a hierarchy's leaves drawn on
-    // patches of the uniform size (display_patch_size) in smooth mode. Before prepare (a preview while the
-    // transport is built), a display of patches() with the emitters' direct light at its vertices
-    // (add_preview_direct_light).
+    // A display with these options: of the solution (build_solution_display), or before there is one the
+    // preview (build_preview_display).
     DisplayMesh build_display(const DisplayOptions& options, Progress* progress = nullptr) const;
     // Builds display() now, reporting the final gather's progress (a render's stage that can take seconds).
     void prepare_display(Progress* progress) const;
-    // Adds the emitters' direct light to the vertices of a display mesh of patches() before prepare: no
-    // patch holds any of it yet, so each vertex keeps its own value, to be shown with direct_share 1 over
-    // preview_radiosity().
-    void add_preview_direct_light(DisplayMesh& display) const;
     // E per patch of patches(): the radiosity before any light is reflected.
     std::vector<glm::dvec3> preview_radiosity() const;
-    // What a display mesh of patches() needs for texel detail: the scene and each patch's reflectance (the
-    // transport's after prepare, the saved one, or else the patches' mean albedo, which uniform transport
-    // will use).
-    DisplayTexturing display_texturing() const;
     // After prepare.
-    const Transport& transport() const { return *built_.transport; }
+    const Transport& transport() const;
     const Solver& solver() const { return *solver_; }
     const SolverOptions& solver_options() const { return solver_options_; }
     SolverMethod method() const { return method_; }
@@ -119,12 +118,11 @@ class RadiosityPipeline {
     // Emitted, absorbed and escaped power of the solution as it stands (after prepare).
     EnergyBalance energy_balance() const;
 
-    // Linear radiance L = B / π per display vertex for the solution as it stands (black before prepare).
+    // Linear radiance L = B / π per display vertex for the solution as it stands (black before there is
+    // one).
     std::vector<glm::vec3> vertex_radiance() const;
 
-    // The saved solution the pipeline was made from, until prepare() replaces it by a transport; else null.
-    const SavedSolution* saved() const { return saved_ && !solver_ ? &*saved_ : nullptr; }
-    // The state to save (after prepare): the scene, the settings, the elements and the solution.
+    // The state to save: the scene and the solution, with the display patches' own gather.
     SavedSolution saved_solution() const;
 
     const WorkCounts& work() const { return work_; }
@@ -132,30 +130,36 @@ class RadiosityPipeline {
 
   private:
     TransportSettings transport_settings() const;
-    // The size of the patches a solution is drawn on in smooth mode, 0 for its own (DisplayPatches): the
-    // uniform size for a hierarchy, whose leaves hold light linked to larger elements.
-    double display_patch_size() const;
+    SolutionSettings solution_settings() const;
+    // The solution's elements from the transport just built or edited.
+    void take_elements();
     // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
     std::vector<glm::dvec3> element_direct() const;
-    void continue_saved();
+    void continue_from_solution();
     // A fresh solver of the same method and options from the solution as it stands, after an edit of the
     // transport's sources.
     void restart_from_solution();
+    // The solver's state changed: solution() copies it again when asked.
+    void solver_changed();
     // --subdivision auto: uniform patches or clustering by the scene's faces, then the uniform mesh's size
     // (choose_subdivision), and the patches that subdivision is meshed with.
     void choose_automatic_subdivision();
 
     PipelineOptions options_;
-    std::optional<SavedSolution> saved_;
-    std::string saved_path_;
+    std::string opened_path_;  // the saved file the pipeline was opened from, for errors
     Subdivision subdivision_ = Subdivision::automatic;  // the method, once the constructor has chosen it
     LoadedScene loaded_;
     Sky opened_sky_;  // the scene's sky and sun as opened, which an empty edit returns to
     Sun opened_sun_;
-    SceneTransport built_;
+    std::shared_ptr<SceneTransport> built_;  // shared with the solution's elements where it owns them
+    mutable Solution solution_;
+    // Whether solution_ holds the transport's elements' arrays and the solver's state.
+    mutable bool elements_current_ = true;
+    mutable bool radiosity_current_ = true;
+    bool continues_solution_ = false;             // opened from a file: prepare continues from its radiosity
+    GatherTable traced_display_gather_;           // the file's, until prepare
     mutable std::optional<DisplayMesh> display_;  // of patches(), once asked for
-    mutable std::vector<glm::dvec3>
-        loaded_albedo_;  // of loaded_.patches, for display_texturing before prepare
+    mutable std::vector<glm::dvec3> loaded_albedo_;  // of loaded_.patches, for the preview's texel detail
     SolverMethod method_;
     SolverOptions solver_options_;
     std::unique_ptr<Solver> solver_;

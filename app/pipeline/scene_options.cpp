@@ -29,7 +29,7 @@ void mesh_loaded(LoadedScene& loaded, const SceneOptions& options, double defaul
         options.patch_size > 0.0 ? options.patch_size : default_scale * default_patch_size(loaded.scene);
     MeshingOptions meshing;
     meshing.patch_size = loaded.patch_size;
-    loaded.patches = build_patches(loaded.scene, meshing);
+    loaded.patches = std::make_shared<const PatchMesh>(build_patches(loaded.scene, meshing));
 }
 
 LoadedScene load_and_mesh(const SceneOptions& options, double default_scale) {

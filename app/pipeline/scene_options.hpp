@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "rad/mesh/patch_mesh.hpp"
@@ -17,7 +18,7 @@ struct SceneOptions {
 
 struct LoadedScene {
     Scene scene;
-    PatchMesh patches;
+    std::shared_ptr<const PatchMesh> patches;  // shared with the solutions over them
     double patch_size = 0.0;
 };
 

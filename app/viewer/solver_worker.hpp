@@ -4,7 +4,6 @@
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -18,8 +17,11 @@
 
 #include "pipeline/radiosity_pipeline.hpp"
 #include "rad/display/display_mesh.hpp"
+#include "rad/util/error.hpp"
 #include "rad/util/progress.hpp"
+#include "viewer/bounce_history.hpp"
 #include "viewer/solver_snapshot.hpp"
+#include "viewer/worker_commands.hpp"
 
 namespace rad {
 
@@ -72,53 +74,51 @@ class SolverWorker {
     std::size_t pending_steps() const;
 
   private:
-    struct Rebuild {
-        PipelineOptions options;
-        std::size_t steps = 0;  // asked for with it, taken once it has opened
-    };
-    struct Reset {
-        std::string method;
-        double tolerance;
-        bool from_emission;  // B = E whatever --initial says (the panel's reset); else --initial's guess
-    };
+    using Command = WorkerCommands::Command;
 
-    struct MaterialEdit {
-        std::string name;
-        glm::dvec3 reflectance;
-        glm::dvec3 emitted_radiance;
-    };
-
-    struct Write {
-        std::string path;
-        double exposure;
-    };
-
+    // Changes what is asked of the worker, under mutex_, and wakes it.
+    void ask(const std::function<void()>& change);
     void loop();
-    void edit_material(const MaterialEdit& edit);
-    void edit_outside_light(const std::pair<std::string, std::string>& sky_and_sun);
-    // After an edit of the transport's sources: the display again, a fresh history, and the run started.
-    void run_after_edit();
-    void write(const Write& write);
-    bool has_work() const;  // with mutex_ held
-    void rebuild(const Rebuild& request);
+    // Waits for the next command and takes it; nothing once the worker stops.
+    std::optional<Command> wait_for_command();
+    // Runs it on the work's threads; false when it failed (its error is shown).
+    bool run(const Command& command);
+    void end_job(const Command& command, bool completed);
+
+    void rebuild(const WorkerCommands::Rebuild& request);
+    // The scene or saved solution `options` names, loaded and meshed; throws InputError when it does not
+    // open.
+    struct OpenedScene {
+        std::unique_ptr<RadiosityPipeline> pipeline;
+        std::optional<PipelineOptions> saved_options;  // a saved solution's own
+        std::size_t saved_steps = 0;
+    };
+    OpenedScene open_scene(const PipelineOptions& options) const;
+    // Nothing changed, so the previous scene stays shown, its steps go on, and the work this request cut
+    // short starts again.
+    void not_opened(const InputError& error);
     // The newly loaded pipeline becomes the one shown; a new scene's is not prepared yet.
     void show_pipeline(std::unique_ptr<RadiosityPipeline> pipeline, const PipelineOptions& options,
                        std::optional<PipelineOptions> saved_options);
+    void show_saved(std::size_t saved_steps);
     void show_preview();
-    void continue_saved(std::size_t saved_steps);
-    void reset_solver(const Reset& reset);
-    void start_solver(const Reset& reset, bool geometry_changed);
+    void start_solver(const WorkerCommands::Reset& reset, bool geometry_changed);
     void take_step();
     void switch_colour_mode(ColourMode mode);
-    void set_can_step(bool can_step);
-    void start_bounce_history();
+    void edit_material(const WorkerCommands::MaterialEdit& edit);
+    void edit_outside_light(const WorkerCommands::OutsideLight& light);
+    // After an edit of the transport's sources: the display again, a fresh history, and the run started.
+    void run_after_edit();
+    void write(const WorkerCommands::Write& file);
+    void prepare_solver();
     // A fresh history whose step 0 is the solver's radiosity as it starts, with no plots yet.
     void start_history_from_solver();
-    // `direct_share`: how much of the emitters' direct light the step added (direct_light_share's rise).
-    void add_bounce(std::vector<glm::dvec3> bounce, double direct_share);
+    void set_can_step(bool can_step);
     // Hands the display mesh (when it changed) and the colours (when the solver has some) to the render
     // thread.
     void publish(bool geometry_changed, bool with_radiance);
+    std::shared_ptr<ViewerGeometry> shown_geometry() const;
+    std::shared_ptr<ViewerRadiance> shown_radiance() const;
     void publish_statistics();
     // The radiosity drawn now (the saved, the preview's, or the solver's) and the direct share it is drawn
     // with.
@@ -129,23 +129,13 @@ class SolverWorker {
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;
-    // Requests, guarded by mutex_.
-    std::optional<Rebuild> pending_rebuild_;
-    std::optional<Rebuild> current_rebuild_;      // the rebuild running now
-    std::optional<Rebuild> interrupted_rebuild_;  // cut short by a newer one
+    // Guarded by mutex_.
+    WorkerCommands commands_;
     // Rebuilds, this one included, that keep the error shown: a failed load's, while the work it cut short
     // starts again.
     int keep_error_jobs_ = 0;
-    std::optional<Reset> pending_reset_;
-    std::optional<ColourMode> pending_colour_mode_;
-    std::vector<MaterialEdit> pending_edits_;
-    std::optional<std::pair<std::string, std::string>> pending_outside_;  // sky, sun
-    std::vector<Write> pending_writes_;
-    std::size_t pending_steps_ = 0;
-    bool running_ = false;
     bool stop_ = false;
     bool working_ = false;
-    bool can_step_ = false;  // a solver exists and has not finished
     std::shared_ptr<Progress> progress_;
     SolverSnapshot snapshot_;
 
@@ -153,25 +143,13 @@ class SolverWorker {
     PipelineOptions options_;
     std::unique_ptr<RadiosityPipeline> pipeline_;
     DisplayMesh display_;
-    // Per patch, what each of the last steps added (front: step first_bounce_), and the same per vertex.
-    std::deque<std::vector<glm::dvec3>> bounce_history_;
-    std::deque<ViewerRadiance::Colours> vertex_bounces_;
-    std::deque<double> bounce_direct_share_;
-    std::size_t first_bounce_ = 0;
-    // The solver's radiosity one step before the one shown (empty at the start of a history), which the
-    // vertices with a gather row take (stepped_vertex_radiance), so they show the bounces of the step too.
-    std::vector<glm::dvec3> previous_solution_;
-    std::vector<float> history_residual_;
-    std::vector<float> history_unshot_;
-    std::string scene_name_;
+    BounceHistory history_;
     std::string shown_scene_;  // the scene drawn (a saved solution's own), which keeps the view when reopened
     std::uint64_t scene_version_ = 0;
     std::uint64_t opened_ = 0;
     std::shared_ptr<const std::vector<ViewerMaterial>> materials_;  // the scene's, as shown
     std::optional<PipelineOptions> saved_options_;                  // see ViewerStatistics::saved_options
     std::string remesh_unavailable_;
-    // A saved solution continues from its own step count (the pipeline's solver counts from 0 again).
-    std::size_t step_offset_ = 0;
     // The pipeline has a solver: prepare() returned (it can throw after counting a form-factor pass).
     bool solver_ready_ = false;
     std::function<void()> on_change_;

@@ -8,9 +8,9 @@
 #include <numbers>
 #include <numeric>
 
+#include "display/display_patch_gather.hpp"
+#include "display/display_patches.hpp"
 #include "rad/display/display_mesh.hpp"
-#include "rad/display/display_patch_gather.hpp"
-#include "rad/display/display_patches.hpp"
 #include "rad/ray/ray_scene.hpp"
 #include "rad/scene/builtin_scenes.hpp"
 #include "solved_scene.hpp"

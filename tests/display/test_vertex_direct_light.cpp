@@ -11,8 +11,8 @@
 #include <numbers>
 #include <string>
 
+#include "display/vertex_direct_light.hpp"
 #include "rad/display/display_mesh.hpp"
-#include "rad/display/vertex_direct_light.hpp"
 #include "rad/geometry/point_polygon_factor.hpp"
 #include "rad/ray/ray_scene.hpp"
 #include "rad/scene/builtin_scenes.hpp"

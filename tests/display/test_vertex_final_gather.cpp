@@ -6,9 +6,9 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "display/vertex_final_gather.hpp"
 #include "form_factor_test_scenes.hpp"
 #include "rad/display/display_mesh.hpp"
-#include "rad/display/vertex_final_gather.hpp"
 #include "rad/geometry/point_polygon_factor.hpp"
 #include "rad/ray/ray_scene.hpp"
 #include "rad/scene/builtin_scenes.hpp"

@@ -1,6 +1,7 @@
 // The saved-solution file: every field comes back as written, and a truncated, corrupt, foreign, future or
 // forged file is refused with one InputError line that names the file.
 #include <gtest/gtest.h>
+#include <functional>
 
 #include <bit>
 #include <filesystem>
@@ -24,16 +25,16 @@ SavedSolution example() {
     saved.scene.camera = Camera{{0.5, 0.5, 0.9}, {0.5, 0.4, 0.0}, {0.0, 1.0, 0.1}, 70.0};
     MeshingOptions meshing;
     meshing.patch_size = 300.0;
-    saved.patches = build_patches(saved.scene, meshing);
+    PatchMesh elements = build_patches(saved.scene, meshing);
     // Outlines, as a hierarchical mesh has them: each patch's corners listed.
-    saved.patches.outline_begin.push_back(0);
-    for (std::size_t p = 0; p < saved.patches.size(); ++p) {
-        for (int k = 0; k < saved.patches.corner_count(p); ++k) {
-            saved.patches.outline.push_back(saved.patches.corners[p][k]);
-        }
-        saved.patches.outline_begin.push_back(static_cast<std::uint32_t>(saved.patches.outline.size()));
+    elements.outline_begin.push_back(0);
+    for (std::size_t p = 0; p < elements.size(); ++p) {
+        for (int k = 0; k < elements.corner_count(p); ++k) elements.outline.push_back(elements.corners[p][k]);
+        elements.outline_begin.push_back(static_cast<std::uint32_t>(elements.outline.size()));
     }
-    SavedSettings& s = saved.settings;
+    Solution& solution = saved.solution;
+    solution.elements = std::make_shared<const PatchMesh>(std::move(elements));
+    SolutionSettings& s = solution.settings;
     s.scene_source = "builtin:cube";
     s.patch_size = 0.5;
     s.subdivision = "hierarchical";
@@ -49,19 +50,27 @@ SavedSolution example() {
     s.bounces = 77;
     s.initial = "direct";
     s.relaxation = 1.25;
-    for (std::size_t i = 0; i < saved.size(); ++i) {
+    for (std::size_t i = 0; i < solution.size(); ++i) {
         const double x = double(i);
-        saved.area.push_back(0.25 + x / 1000.0);
-        saved.reflectance.push_back({0.1 + x / 100.0, 0.2, 0.3});
-        saved.emission.push_back({x, 2.0 * x, 0.5});
-        saved.solution.push_back({x + 0.125, x + 0.25, x + 1.0 / 3.0});
-        saved.display_solution.push_back({x + 0.5, x + 0.75, x + 1e-300});
-        saved.direct.push_back({x / 4.0, 0.0, x + 2.0});
+        solution.area.push_back(0.25 + x / 1000.0);
+        solution.reflectance.push_back({0.1 + x / 100.0, 0.2, 0.3});
+        solution.emission.push_back({x, 2.0 * x, 0.5});
+        solution.radiosity.push_back({x + 0.125, x + 0.25, x + 1.0 / 3.0});
+        solution.shown_radiosity.push_back({x + 0.5, x + 0.75, x + 1e-300});
+        solution.direct.push_back({x / 4.0, 0.0, x + 2.0});
     }
     saved.display_gather.row_begin = {0, 2, 2, 3};
-    saved.display_gather.patch = {0, 5, static_cast<std::uint32_t>(saved.size() - 1)};
+    saved.display_gather.patch = {0, 5, static_cast<std::uint32_t>(solution.size() - 1)};
     saved.display_gather.weight = {0.25f, 0.5f, 1.0f};
-    saved.report = {42, 3.5e-6, "iteration limit", "stopped at the step limit of 42"};
+    solution.report = {42, 3.5e-6, "iteration limit", "stopped at the step limit of 42"};
+    return saved;
+}
+
+// The saved solution with its elements edited (they are shared, so edited as a copy).
+SavedSolution with_elements(SavedSolution saved, const std::function<void(PatchMesh&)>& edit) {
+    PatchMesh elements = *saved.solution.elements;
+    edit(elements);
+    saved.solution.elements = std::make_shared<const PatchMesh>(std::move(elements));
     return saved;
 }
 
@@ -72,7 +81,7 @@ TEST(SavedSolution, RoundTripsEveryField) {
     write_saved_solution(path, a);
     const SavedSolution b = read_saved_solution(path);
 
-    const SavedSettings &sa = a.settings, &sb = b.settings;
+    const SolutionSettings &sa = a.solution.settings, &sb = b.solution.settings;
     EXPECT_EQ(sb.scene_source, sa.scene_source);
     EXPECT_EQ(sb.patch_size, sa.patch_size);
     EXPECT_EQ(sb.subdivision, sa.subdivision);
@@ -115,9 +124,9 @@ TEST(SavedSolution, RoundTripsEveryField) {
     // The scene made again meshes as the saved patches do.
     MeshingOptions meshing;
     meshing.patch_size = 300.0;
-    EXPECT_EQ(build_patches(b.scene, meshing).points, a.patches.points);
+    EXPECT_EQ(build_patches(b.scene, meshing).points, a.solution.elements->points);
 
-    const PatchMesh &pa = a.patches, &pb = b.patches;
+    const PatchMesh &pa = *a.solution.elements, &pb = *b.solution.elements;
     EXPECT_EQ(pb.points, pa.points);
     EXPECT_EQ(pb.positions, pa.positions);
     EXPECT_EQ(pb.corners, pa.corners);
@@ -140,27 +149,29 @@ TEST(SavedSolution, RoundTripsEveryField) {
     EXPECT_EQ(pb.outline, pa.outline);
     EXPECT_FALSE(pb.outline.empty());
 
-    EXPECT_EQ(b.area, a.area);
-    EXPECT_EQ(b.reflectance, a.reflectance);
-    EXPECT_EQ(b.emission, a.emission);
-    EXPECT_EQ(b.solution, a.solution);
-    EXPECT_EQ(b.display_solution, a.display_solution);
-    EXPECT_EQ(b.direct, a.direct);
-    EXPECT_EQ(b.report.steps, 42u);
-    EXPECT_EQ(b.report.residual, 3.5e-6);
-    EXPECT_EQ(b.report.status, "iteration limit");
-    EXPECT_EQ(b.report.status_message, "stopped at the step limit of 42");
+    const Solution &ya = a.solution, &yb = b.solution;
+    EXPECT_EQ(yb.area, ya.area);
+    EXPECT_EQ(yb.reflectance, ya.reflectance);
+    EXPECT_EQ(yb.emission, ya.emission);
+    EXPECT_EQ(yb.radiosity, ya.radiosity);
+    EXPECT_EQ(yb.shown_radiosity, ya.shown_radiosity);
+    EXPECT_EQ(yb.direct, ya.direct);
+    EXPECT_EQ(yb.report.steps, 42u);
+    EXPECT_EQ(yb.report.residual, 3.5e-6);
+    EXPECT_EQ(yb.report.status, "iteration limit");
+    EXPECT_EQ(yb.report.status_message, "stopped at the step limit of 42");
 }
 
 TEST(SavedSolution, ASceneWithoutCameraOrOutlinesRoundTrips) {
-    SavedSolution a = example();
+    SavedSolution a = with_elements(example(), [](PatchMesh& m) {
+        m.outline_begin.clear();
+        m.outline.clear();
+    });
     a.scene.camera.reset();
-    a.patches.outline_begin.clear();
-    a.patches.outline.clear();
     const SavedSolution b = decode_saved_solution(encode_saved_solution(a), "x.radiosity");
     EXPECT_FALSE(b.scene.camera.has_value());
-    EXPECT_TRUE(b.patches.outline_begin.empty());
-    EXPECT_EQ(b.solution, a.solution);
+    EXPECT_TRUE(b.solution.elements->outline_begin.empty());
+    EXPECT_EQ(b.solution.radiosity, a.solution.radiosity);
 }
 
 // The message decode gives, or "" when it accepts the bytes.
@@ -221,7 +232,7 @@ TEST(SavedSolution, RefusesTruncatedCorruptForeignFutureAndForgedFiles) {
     expect_refused(forged, "element count 1099511627776 does not fit the file");
     // A count one higher fits the bytes but not the patches.
     std::string off_by_one = good;
-    write_u64(off_by_one, kSavedSolutionHeaderBytes, example().size() + 1);
+    write_u64(off_by_one, kSavedSolutionHeaderBytes, example().solution.size() + 1);
     reseal(off_by_one);
     expect_refused(off_by_one, "differs from the element count");
 }
@@ -229,7 +240,7 @@ TEST(SavedSolution, RefusesTruncatedCorruptForeignFutureAndForgedFiles) {
 TEST(SavedSolution, RefusesNonFiniteValuesAndIndicesOutOfRange) {
     // Values written in range, then edited in the bytes: find the solution's first value by its bits.
     SavedSolution a = example();
-    a.solution[3].y = 1234.5678;
+    a.solution.radiosity[3].y = 1234.5678;
     const std::string good = encode_saved_solution(a);
     const auto bits = std::bit_cast<std::uint64_t>(1234.5678);
     std::string needle(8, '\0');
@@ -243,17 +254,17 @@ TEST(SavedSolution, RefusesNonFiniteValuesAndIndicesOutOfRange) {
 
     // A patch corner beyond the points: write a mesh whose corner is out of range, which encode does not
     // check, and expect decode to refuse it.
-    SavedSolution bad_corner = example();
-    bad_corner.patches.corners[5][1] = static_cast<std::uint32_t>(bad_corner.patches.points.size());
+    const SavedSolution bad_corner = with_elements(
+        example(), [](PatchMesh& m) { m.corners[5][1] = static_cast<std::uint32_t>(m.points.size()); });
     expect_refused(encode_saved_solution(bad_corner), "patch corner");
-    SavedSolution bad_surface = example();
-    bad_surface.patches.patches[2].surface = 99;
+    const SavedSolution bad_surface =
+        with_elements(example(), [](PatchMesh& m) { m.patches[2].surface = 99; });
     expect_refused(encode_saved_solution(bad_surface), "patch surface 99 is out of range");
-    SavedSolution bad_face = example();
-    bad_face.patches.patches[2].face = 1'000'000;
+    const SavedSolution bad_face =
+        with_elements(example(), [](PatchMesh& m) { m.patches[2].face = 1'000'000; });
     expect_refused(encode_saved_solution(bad_face), "patch face 1000000 is out of range");
     SavedSolution bad_element = example();
-    bad_element.display_gather.patch[1] = static_cast<std::uint32_t>(bad_element.size());
+    bad_element.display_gather.patch[1] = static_cast<std::uint32_t>(bad_element.solution.size());
     expect_refused(encode_saved_solution(bad_element), "display gather element");
     SavedSolution bad_offsets = example();
     bad_offsets.display_gather.row_begin = {0, 3, 2, 3};
@@ -265,10 +276,10 @@ TEST(SavedSolution, RefusesNonFiniteValuesAndIndicesOutOfRange) {
     bad_reflectance.scene.surfaces[0].material.reflectance.x = 1.0;
     expect_refused(encode_saved_solution(bad_reflectance), "reflectance");
     SavedSolution bad_direct = example();
-    bad_direct.direct[4].z = -1.0;
+    bad_direct.solution.direct[4].z = -1.0;
     expect_refused(encode_saved_solution(bad_direct), "element 4: negative direct light");
     SavedSolution bad_solver = example();
-    bad_solver.settings.solver = "magic";
+    bad_solver.solution.settings.solver = "magic";
     expect_refused(encode_saved_solution(bad_solver), "solver 'magic'");
 }
 
@@ -291,7 +302,7 @@ TEST(SavedSolution, RefusesMissingAndNonRegularFilesNamingThem) {
 
 TEST(SavedSolution, WritesNothingWhenAValueIsNotFinite) {
     SavedSolution a = example();
-    a.display_solution[0].x = std::numeric_limits<double>::infinity();
+    a.solution.shown_radiosity[0].x = std::numeric_limits<double>::infinity();
     test::TempDir dir;
     EXPECT_THROW(write_saved_solution(dir.path() / "x.radiosity", a), std::invalid_argument);
     EXPECT_TRUE(std::filesystem::is_empty(dir.path()));

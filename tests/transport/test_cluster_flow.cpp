@@ -7,6 +7,7 @@
 
 #include "any_radiosity_balance.hpp"
 #include "rad/scene/builtin_scenes.hpp"
+#include "rad/transport/clustered/clustered_transport.hpp"
 #include "rad/transport/scene_transport.hpp"
 #include "transport/clustered/cluster_balance.hpp"
 #include "transport/clustered/cluster_flow.hpp"
@@ -20,10 +21,10 @@ class ClusterFlow : public ::testing::TestWithParam<bool> {};  // isotropic clus
 struct Cornell {
     explicit Cornell(bool isotropic)
         : scene(make_builtin_scene("cornell")), base(build_patches(scene, MeshingOptions{140.0})) {
-        TransportSettings settings;
-        settings.subdivision = Subdivision::clustered;
-        settings.clustered.isotropic_clusters = isotropic;
-        built = build_scene_transport(scene, base, settings);
+        auto clustered =
+            make_clustered_transport(scene, base, ClusteredOptions{.isotropic_clusters = isotropic});
+        built.patches = &clustered->hierarchy().leaf_patches;
+        built.transport = std::move(clustered);
     }
     Scene scene;
     PatchMesh base;

@@ -9,6 +9,7 @@
 
 #include "rad/scene/builtin_scenes.hpp"
 #include "rad/solve/solver.hpp"
+#include "rad/transport/clustered/clustered_transport.hpp"
 #include "rad/transport/scene_transport.hpp"
 #include "rad/util/error.hpp"
 
@@ -85,8 +86,14 @@ SurfaceMeans surface_means(const Scene& scene, Subdivision subdivision, bool iso
     const PatchMesh base = build_patches(scene, MeshingOptions{scale * default_patch_size(scene)});
     TransportSettings settings;
     settings.subdivision = subdivision;
-    settings.clustered.isotropic_clusters = isotropic;
-    const SceneTransport built = build_scene_transport(scene, base, settings);
+    SceneTransport built;
+    if (isotropic) {  // a knob of clustering's own, not a setting of every method
+        auto clustered = make_clustered_transport(scene, base, ClusteredOptions{.isotropic_clusters = true});
+        built.patches = &clustered->hierarchy().leaf_patches;
+        built.transport = std::move(clustered);
+    } else {
+        built = build_scene_transport(scene, base, settings);
+    }
     SolverOptions options;
     options.tolerance = 1e-6;
     auto solver = make_solver(SolverMethod::jacobi, *built.transport, options);

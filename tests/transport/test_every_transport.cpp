@@ -34,9 +34,8 @@ Scene furnace_cube(double reflectance, double emitted_radiosity) {
 TransportSettings settings_for(Subdivision subdivision) {
     TransportSettings settings;
     settings.subdivision = subdivision;
-    settings.hierarchical.tolerance = 0.01;
-    settings.adaptive.tolerance = 0.15;
-    settings.adaptive.max_passes = 2;
+    if (subdivision == Subdivision::hierarchical) settings.refine_tolerance = 0.01;
+    settings.max_passes = 2;
     return settings;
 }
 

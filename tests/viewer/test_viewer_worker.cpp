@@ -436,7 +436,7 @@ TEST(ViewerWorker, OpensASavedSolutionAndContinuesSteppingFromIt) {
 TEST(ViewerWorker, ShowsASavedSolutionBeforeAnyFormFactorPass) {
     const PipelineOptions options = unfinished_cornell();
     SavedSolution saved = solved(options);
-    saved.settings.patch_size = 12.0;
+    saved.solution.settings.patch_size = 12.0;
     test::TempDir dir;
     SolverWorker worker(opening(options, write_saved(dir, "slow.radiosity", saved)));
     const auto give_up = Clock::now() + std::chrono::seconds(120);
@@ -450,7 +450,7 @@ TEST(ViewerWorker, ShowsASavedSolutionBeforeAnyFormFactorPass) {
     expect_near(snapshot.radiance->cumulative, radiance_after(options, kSavedSteps));
     EXPECT_FALSE(snapshot.statistics.prepared);
     EXPECT_EQ(snapshot.statistics.form_factor_passes, 0u);
-    EXPECT_EQ(snapshot.statistics.patches, saved.size());
+    EXPECT_EQ(snapshot.statistics.patches, saved.solution.size());
 
     worker.cancel();
     ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(30)));
@@ -465,7 +465,7 @@ TEST(ViewerWorker, ShowsASavedSolutionBeforeAnyFormFactorPass) {
 TEST(ViewerWorker, ASavedSolutionWhoseTransportDiffersStaysShownWithTheError) {
     const PipelineOptions options = unfinished_cornell();
     SavedSolution saved = solved(options);
-    saved.settings.patch_size = 90.0;  // 7 patches an edge, not 6
+    saved.solution.settings.patch_size = 90.0;  // 7 patches an edge, not 6
     test::TempDir dir;
     SolverWorker worker(opening(options, write_saved(dir, "other.radiosity", saved)));
     worker.request_steps(1);
@@ -485,7 +485,7 @@ TEST(ViewerWorker, ASavedSolutionWhoseSceneFileIsGoneCannotBeRemeshed) {
     SavedSolution saved = solved(options);
     test::TempDir dir;
     const std::string moved = (dir.path() / "moved.obj").string();
-    saved.settings.scene_source = moved;
+    saved.solution.settings.scene_source = moved;
     SolverWorker worker(opening(options, write_saved(dir, "moved.radiosity", saved)));
     ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(120)));
     const SolverSnapshot snapshot = worker.snapshot();
@@ -545,7 +545,7 @@ TEST(ViewerWorker, SavesTheSolutionAndExportsTheMeshShown) {
     worker.request_write(saved, 0.0);
     ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(60)));
     EXPECT_EQ(worker.snapshot().written, "wrote " + saved);
-    EXPECT_EQ(read_saved_solution(saved).report.steps, 3u);
+    EXPECT_EQ(read_saved_solution(saved).solution.report.steps, 3u);
     worker.request_write(mesh, 0.0);
     ASSERT_TRUE(wait_until_idle(worker, std::chrono::seconds(60)));
     EXPECT_EQ(worker.snapshot().written, "wrote " + mesh);

@@ -1,4 +1,4 @@
-#include "rad/display/display_patch_gather.hpp"
+#include "display/display_patch_gather.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -1,4 +1,4 @@
-#include "rad/display/display_patches.hpp"
+#include "display/display_patches.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -146,16 +146,6 @@ void add_shares(std::span<const std::uint32_t> under, std::span<const double> ex
 }
 
 }  // namespace
-
-std::vector<glm::dvec3> PatchRestriction::apply(std::span<const glm::dvec3> values) const {
-    if (values.size() != source_count)
-        throw std::invalid_argument("PatchRestriction: the values do not have one entry per solution patch");
-    std::vector<glm::dvec3> out(size(), glm::dvec3(0.0));
-    for (std::size_t d = 0; d < out.size(); ++d)
-        for (std::uint32_t k = begin[d]; k < begin[d + 1]; ++k)
-            out[d] += static_cast<double>(share[k]) * values[source[k]];
-    return out;
-}
 
 DisplayPatches make_display_patches(const Scene& scene, const PatchMesh& solution,
                                     const RayScene& solution_rays, std::span<const double> exposed,

@@ -1,4 +1,4 @@
-#include "rad/display/vertex_direct_light.hpp"
+#include "display/vertex_direct_light.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>

@@ -1,4 +1,4 @@
-#include "rad/display/vertex_final_gather.hpp"
+#include "display/vertex_final_gather.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -155,7 +155,7 @@ class Reader {
     std::size_t at_ = 0;
 };
 
-void write_settings(Writer& w, const SavedSettings& s) {
+void write_settings(Writer& w, const SolutionSettings& s) {
     w.text(s.scene_source);
     w.f64(s.patch_size);
     w.text(s.subdivision);
@@ -183,8 +183,8 @@ void check_name(const Reader& r, const char* what, const std::string& name, cons
     r.fail(std::string(what) + " '" + name + "' is none of " + list);
 }
 
-SavedSettings read_settings(Reader& r) {
-    SavedSettings s;
+SolutionSettings read_settings(Reader& r) {
+    SolutionSettings s;
     s.scene_source = r.text("scene source");
     s.patch_size = r.f64("patch size");
     if (s.patch_size <= 0.0) r.fail("patch size must be positive");
@@ -451,9 +451,12 @@ std::uint64_t saved_solution_checksum(std::string_view payload) {
 }
 
 std::string encode_saved_solution(const SavedSolution& saved) {
-    const std::size_t n = saved.size();
-    if (saved.area.size() != n || saved.reflectance.size() != n || saved.emission.size() != n ||
-        saved.solution.size() != n || saved.display_solution.size() != n || saved.direct.size() != n) {
+    const Solution& solution = saved.solution;
+    if (!solution.elements) throw std::invalid_argument("saved solution: no elements");
+    const std::size_t n = solution.size();
+    if (solution.area.size() != n || solution.reflectance.size() != n || solution.emission.size() != n ||
+        solution.radiosity.size() != n || solution.shown_radiosity.size() != n ||
+        solution.direct.size() != n) {
         throw std::invalid_argument("saved solution: per-element arrays differ from the patch count");
     }
     const GatherTable& gather = saved.display_gather;
@@ -463,21 +466,21 @@ std::string encode_saved_solution(const SavedSolution& saved) {
     }
     Writer w;
     w.count(n);
-    write_settings(w, saved.settings);
+    write_settings(w, solution.settings);
     write_scene(w, saved.scene);
-    write_patches(w, saved.patches);
-    for (double a : saved.area) w.f64(a);
-    for (const auto* values :
-         {&saved.reflectance, &saved.emission, &saved.solution, &saved.display_solution, &saved.direct})
+    write_patches(w, *solution.elements);
+    for (double a : solution.area) w.f64(a);
+    for (const auto* values : {&solution.reflectance, &solution.emission, &solution.radiosity,
+                               &solution.shown_radiosity, &solution.direct})
         for (const glm::dvec3& v : *values) w.vec(v);
     const GatherTable& g = saved.display_gather;
     w.indices(g.row_begin);
     w.indices(g.patch);
     for (float x : g.weight) w.f32(x);
-    w.u64(saved.report.steps);
-    w.f64(saved.report.residual);
-    w.text(saved.report.status);
-    w.text(saved.report.status_message);
+    w.u64(solution.report.steps);
+    w.f64(solution.report.residual);
+    w.text(solution.report.status);
+    w.text(solution.report.status_message);
 
     Writer header;
     header.bytes() = std::string(kSavedSolutionMagic);
@@ -513,15 +516,17 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
 
     Reader r(payload, name);
     SavedSolution saved;
+    Solution& solution = saved.solution;
     // The smallest element is 80 bytes of patch and 128 of values.
     const std::size_t n = r.count("element count", 80 + 128);
-    saved.settings = read_settings(r);
+    solution.settings = read_settings(r);
     saved.scene = read_scene(r);
-    saved.scene.source = saved.settings.scene_source;
-    saved.patches = read_patches(r, n, saved.scene);
-    saved.patches.back_to_back = back_to_back_surfaces(saved.scene);
-    saved.area.resize(n);
-    for (double& a : saved.area) {
+    saved.scene.source = solution.settings.scene_source;
+    PatchMesh elements = read_patches(r, n, saved.scene);
+    elements.back_to_back = back_to_back_surfaces(saved.scene);
+    solution.elements = std::make_shared<const PatchMesh>(std::move(elements));
+    solution.area.resize(n);
+    for (double& a : solution.area) {
         a = r.f64("element area");
         if (a < 0.0) r.fail("an element area is negative");
     }
@@ -529,32 +534,34 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
         v.resize(n);
         for (glm::dvec3& x : v) x = r.vec(what);
     };
-    values(saved.reflectance, "element reflectance");
-    values(saved.emission, "element emission");
-    values(saved.solution, "solution");
-    values(saved.display_solution, "display solution");
-    values(saved.direct, "element direct light");
+    values(solution.reflectance, "element reflectance");
+    values(solution.emission, "element emission");
+    values(solution.radiosity, "solution");
+    values(solution.shown_radiosity, "display solution");
+    values(solution.direct, "element direct light");
     for (std::size_t i = 0; i < n; ++i) {
         for (int c = 0; c < 3; ++c) {
-            if (saved.reflectance[i][c] < 0.0 || saved.reflectance[i][c] > 1.0) {
+            if (solution.reflectance[i][c] < 0.0 || solution.reflectance[i][c] > 1.0) {
                 r.fail("element " + std::to_string(i) + ": reflectance outside [0, 1]");
             }
-            if (saved.emission[i][c] < 0.0) r.fail("element " + std::to_string(i) + ": negative emission");
-            if (saved.direct[i][c] < 0.0) r.fail("element " + std::to_string(i) + ": negative direct light");
+            if (solution.emission[i][c] < 0.0) r.fail("element " + std::to_string(i) + ": negative emission");
+            if (solution.direct[i][c] < 0.0)
+                r.fail("element " + std::to_string(i) + ": negative direct light");
         }
     }
     saved.display_gather = read_display_gather(r, n);
-    saved.report.steps = r.u64("step count");
-    saved.report.residual = r.f64("residual");
-    if (saved.report.residual < 0.0) r.fail("the residual is negative");
-    saved.report.status = r.text("solver status");
+    SolutionReport& report = solution.report;
+    report.steps = r.u64("step count");
+    report.residual = r.f64("residual");
+    if (report.residual < 0.0) r.fail("the residual is negative");
+    report.status = r.text("solver status");
     std::vector<std::string_view> statuses;
     for (SolverStatus s : {SolverStatus::running, SolverStatus::converged, SolverStatus::iteration_limit,
                            SolverStatus::diverged, SolverStatus::not_converging}) {
         statuses.push_back(solver_status_name(s));
     }
-    check_name(r, "solver status", saved.report.status, statuses);
-    saved.report.status_message = r.text("status message");
+    check_name(r, "solver status", report.status, statuses);
+    report.status_message = r.text("status message");
     if (r.left() != 0) r.fail(std::to_string(r.left()) + " bytes follow the payload's end");
     return saved;
 }

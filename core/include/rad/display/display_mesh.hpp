@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
-#include "rad/display/display_patches.hpp"
 #include "rad/display/gather_table.hpp"
+#include "rad/display/patch_restriction.hpp"
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/texture.hpp"
 

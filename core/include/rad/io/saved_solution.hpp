@@ -3,66 +3,23 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "rad/display/gather_table.hpp"
-#include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/scene.hpp"
+#include "rad/solve/solution.hpp"
 
 namespace rad {
 
-// The settings a solution was solved with: enough to rebuild its transport (form factors or links) from the
-// saved scene, which is not saved. Methods are stored by their names (subdivision_name, solver_method_name,
-// "hemisphere" or "analytic", initial_guess_name); zero tolerances, sizes and rays mean the method's default,
-// as in the settings themselves.
-struct SavedSettings {
-    std::string scene_source;  // the scene's file path or builtin:NAME, for messages
-    double patch_size = 0.0;   // the size the (base) patches were made with, never 0
-    std::string subdivision = "uniform";
-    double refine_tolerance = 0.0;
-    double min_patch_size = 0.0;
-    std::string form_factor_method = "hemisphere";
-    std::int64_t rays = 0;
-    std::uint64_t seed = 1;
-    bool reciprocity = false;
-    bool normalize_rows = false;
-    std::string solver = "jacobi";  // the method that ran (never "auto")
-    double tolerance = 1e-5;
-    std::uint64_t bounces = 1000;  // the step limit in sweeps (a southwell sweep is a shot per element)
-    std::string initial = "emission";
-    double relaxation = 1.0;
-};
-
-// The solver's last report.
-struct SavedReport {
-    std::uint64_t steps = 0;
-    double residual = 0.0;
-    std::string status = "converged";  // solver_status_name
-    std::string status_message;
-};
-
-// A solved scene, as `solve --save` writes it: the scene as loaded (its warnings excepted), the settings,
-// the elements the solution is indexed by (as patches) with their A, ρ, E, the solution, what the display
-// shows and the direct light it draws at vertices, and the solver's report.
+// A solved scene, as `solve --save` writes it: the scene as loaded (its warnings excepted) and its solution,
+// with what the display drew that is slow to trace again.
 struct SavedSolution {
-    SavedSettings settings;
-    Scene scene;  // source is settings.scene_source
-    PatchMesh patches;
-    std::vector<double> area;                       // per element: exposed area
-    std::vector<glm::dvec3> reflectance, emission;  // ρ, E = π Le
-    std::vector<glm::dvec3> solution;               // B (Solver::solution)
-    std::vector<glm::dvec3> display_solution;       // what is shown (Solver::display_solution)
-    std::vector<glm::dvec3> direct;                 // ρ H_d: the emitters' light reflected once
-                                                    // (DisplayMesh::DirectLight::patch)
-    SavedReport report;
+    Scene scene;  // source is solution.settings.scene_source
+    Solution solution;
     // A hierarchy's display patches' own gather (DisplayMesh::PatchGather's table: a row per display patch,
     // over the elements), so that opening the file does not trace it again; empty where the display has none.
     GatherTable display_gather;
-
-    std::size_t size() const { return patches.size(); }
 };
 
 // The file: a 32-byte header, then the payload, all little-endian.

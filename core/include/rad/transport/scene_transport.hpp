@@ -6,9 +6,6 @@
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/scene.hpp"
 #include "rad/solve/solver.hpp"
-#include "rad/transport/adaptive/adaptive_subdivision.hpp"
-#include "rad/transport/clustered/clustered_transport.hpp"
-#include "rad/transport/hierarchical/hierarchical_radiosity.hpp"
 #include "rad/transport/transport.hpp"
 #include "rad/transport/transport_methods.hpp"
 #include "rad/transport/uniform/form_factors.hpp"
@@ -18,11 +15,14 @@ namespace rad {
 
 struct TransportSettings {
     Subdivision subdivision = Subdivision::automatic;
-    // Uniform and adaptive; its memory budget (--max-memory) bounds every method's interactions.
+    // Every method's rays (0: each method's default: hemisphere rays per patch, shadow rays per pair or per
+    // link) and seed; its memory budget (--max-memory) bounds every method's interactions.
     FormFactorOptions form_factors;
-    AdaptiveOptions adaptive;                         // adaptive
-    HierarchicalOptions hierarchical;                 // hierarchical
-    ClusteredOptions clustered;                       // clustered
+    // How finely a refining method refines (--refine-tol) and its smallest element (--min-patch-size); 0
+    // takes the method's default.
+    double refine_tolerance = 0.0;
+    double min_patch_size = 0.0;
+    int max_passes = 0;  // a method that refines in passes (adaptive): at most this many; 0: its default
     SolverMethod pass_method = SolverMethod::jacobi;  // adaptive: how each pass is solved
     SolverOptions pass_solver;
 };
