@@ -28,6 +28,9 @@ template <class... Calls>
 struct Overloaded : Calls... {
     using Calls::operator()...;
 };
+// Clang before 17 deduces no template arguments for aggregates without a guide.
+template <class... Calls>
+Overloaded(Calls...) -> Overloaded<Calls...>;
 
 }  // namespace
 
