@@ -44,14 +44,14 @@ struct StageSeconds {
     double solve = 0.0;
 };
 
-// From a meshed scene to radiance per display vertex: the transport built once, then the solver stepped by
-// the caller (or to the end), and the display mesh built once. The viewer steps it; the commands run it
-// through. It never asks which kind of transport it holds, nor where its solution came from: a solution
-// just solved and one opened from a file are the same Solution, drawn by the same display builder.
 // The options a solution was solved with, over `base` (what the solution does not hold: the memory budget,
 // the display, the threads).
 PipelineOptions options_from_solution(const SolutionSettings& settings, const PipelineOptions& base);
 
+// From a meshed scene to radiance per display vertex: the transport built once, then the solver stepped by
+// the caller (or to the end), and the display mesh built once. The viewer steps it; the commands run it
+// through. It never asks which kind of transport it holds, nor where its solution came from: a solution
+// just solved and one opened from a file are the same Solution, drawn by the same display builder.
 class RadiosityPipeline {
   public:
     // Loads and meshes the scene (for hierarchical radiosity, into base patches). Throws InputError for bad
