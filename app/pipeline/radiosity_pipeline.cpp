@@ -191,34 +191,32 @@ void RadiosityPipeline::prepare(Progress* progress) {
     seconds_.form_factors = clock.seconds();
     work_.form_factor_passes += built_->transport->report().form_factor_passes;
     display_.reset();
-    // The rebuilt transport must be the one the solution was solved on: same elements, same corners.
-    if (continues_solution_) continue_from_solution();
     solver_options_ = rad::solver_options(options_.solver, built_->patches->size());
     if (automatic_method(options_.solver)) method_ = recommended_method(*built_->transport, solver_options_);
+    if (continues_solution_) continue_from_solution();
+    traced_display_gather_ = {};
     // Adaptive subdivision's last pass was solved already, but a fresh solver from B = E is what stepping
     // bounces shows.
-    if (continues_solution_) {
-        solver_options_.initial = InitialGuess::given;
-        solver_options_.given = solution_.radiosity;
-        // Southwell's unshot radiosity is not saved, so it cannot continue; jacobi can, from any radiosity.
-        if (method_ == SolverMethod::southwell) {
-            method_ = SolverMethod::jacobi;
-            solver_options_.max_steps = options_.solver.bounces;
-        }
-        continues_solution_ = false;
-    }
-    traced_display_gather_ = {};
     solver_ = make_solver(method_, *built_->transport, solver_options_);
     take_elements();
 }
 
 void RadiosityPipeline::continue_from_solution() {
+    // The rebuilt transport must be the one the solution was solved on: same elements, same corners.
     const PatchMesh& rebuilt = *built_->patches;
     if (rebuilt.size() != solution_.size() || rebuilt.points != solution_.elements->points) {
         throw InputError(opened_path_ + ": the transport rebuilt from the saved scene and settings has " +
                          std::to_string(rebuilt.size()) + " elements, not the saved " +
                          std::to_string(solution_.size()) + " (saved by another version of the program?)");
     }
+    solver_options_.initial = InitialGuess::given;
+    solver_options_.given = solution_.radiosity;
+    // Southwell's unshot radiosity is not saved, so it cannot continue; jacobi can, from any radiosity.
+    if (method_ == SolverMethod::southwell) {
+        method_ = SolverMethod::jacobi;
+        solver_options_.max_steps = options_.solver.bounces;
+    }
+    continues_solution_ = false;
 }
 
 StepReport RadiosityPipeline::step() {

@@ -66,6 +66,9 @@ class RadiosityPipeline {
     // Builds the transport (form factors, adaptive passes or hierarchical links) and makes the solver; does
     // nothing the second time. Adaptive and hierarchical subdivision change patches() and display().
     void prepare(Progress* progress = nullptr);
+    // Whether prepare() has returned: the transport and the solver exist (it can throw after counting a
+    // form-factor pass).
+    bool prepared() const { return solver_ != nullptr; }
     // One solver step (prepares first if needed).
     StepReport step();
     // Steps until the solver finishes (converged, limit, or cannot converge).
@@ -135,6 +138,7 @@ class RadiosityPipeline {
     void take_elements();
     // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
     std::vector<glm::dvec3> element_direct() const;
+    // Opened from a file: the rebuilt elements must be the file's, and the solver starts from its radiosity.
     void continue_from_solution();
     // A fresh solver of the same method and options from the solution as it stands, after an edit of the
     // transport's sources.

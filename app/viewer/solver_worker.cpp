@@ -200,7 +200,7 @@ void SolverWorker::rebuild(const WorkerCommands::Rebuild& request) {
     const std::string scene = saved ? opened.saved_options->scene.scene : options.scene.scene;
     // The same scene again (another patch size, subdivision or form-factor method): its solution stays
     // shown until the new one has its transport, and a Cancel keeps it.
-    if (!saved && pipeline_ && solver_ready_ && scene == shown_scene_) {
+    if (!saved && pipeline_ && pipeline_->prepared() && scene == shown_scene_) {
         opened.pipeline->prepare(progress_.get());
         show_pipeline(std::move(opened.pipeline), options, std::nullopt);
         display_ = pipeline_->build_display(options_.display, progress_.get());
@@ -251,7 +251,6 @@ void SolverWorker::show_pipeline(std::unique_ptr<RadiosityPipeline> pipeline, co
     options_ = options;
     if (had_pipeline) options_.display = display;  // a smooth/flat choice made since the start stays
     pipeline_ = std::move(pipeline);
-    solver_ready_ = false;
     saved_options_ = std::move(saved_options);
     remesh_unavailable_ = saved_options_ ? missing_scene(saved_options_->scene.scene) : std::string();
     ++opened_;
@@ -342,7 +341,7 @@ void SolverWorker::write(const WorkerCommands::Write& file) {
     std::string error;
     try {
         if (is_saved_solution_path(file.path)) {
-            if (!solver_ready_)
+            if (!pipeline_->prepared())
                 throw InputError(file.path + ": nothing to save before the form factors are known");
             write_saved_solution(file.path, pipeline_->saved_solution());
         } else if (!export_format(file.path)) {
@@ -380,7 +379,7 @@ std::optional<double> SolverWorker::shown_direct_share() const {
 }
 
 void SolverWorker::take_step() {
-    if (!pipeline_ || !solver_ready_) return;
+    if (!pipeline_ || !pipeline_->prepared()) return;
     std::vector<glm::dvec3> before = pipeline_->solver().display_solution();
     const StepReport report = pipeline_->step();
     history_.add_step(display_, std::move(before), pipeline_->solver().display_solution(), report);
@@ -402,7 +401,6 @@ void SolverWorker::switch_colour_mode(ColourMode mode) {
 
 void SolverWorker::prepare_solver() {
     pipeline_->prepare(progress_.get());
-    solver_ready_ = true;
 }
 
 void SolverWorker::start_history_from_solver() {
@@ -447,10 +445,10 @@ std::shared_ptr<ViewerRadiance> SolverWorker::shown_radiance() const {
     auto radiance = std::make_shared<ViewerRadiance>();
     const std::vector<glm::dvec3> shown = shown_radiosity();
     const std::vector<glm::dvec3>& previous = history_.previous_solution();
-    const bool stepped = solver_ready_ && previous.size() == shown.size();
+    const bool stepped = pipeline_->prepared() && previous.size() == shown.size();
     radiance->cumulative = stepped ? stepped_vertex_radiance(display_, shown, previous)
                                    : vertex_radiance(display_, shown, shown_direct_share());
-    if (solver_ready_) {
+    if (pipeline_->prepared()) {
         radiance->bounces.assign(history_.vertex_bounces().begin(), history_.vertex_bounces().end());
         radiance->first_bounce = history_.first_bounce();
         radiance->step = history_.first_step() + pipeline_->solver().report().step;
@@ -475,7 +473,7 @@ void SolverWorker::publish_statistics() {
         statistics.patch_size = pipeline_->loaded().patch_size;
         statistics.seconds = pipeline_->seconds();
         statistics.method = pipeline_->method();
-        statistics.prepared = solver_ready_;
+        statistics.prepared = pipeline_->prepared();
         statistics.form_factor_passes = pipeline_->work().form_factor_passes;
         if (statistics.prepared) {
             const TransportReport transport = pipeline_->transport().report();

@@ -150,8 +150,6 @@ class SolverWorker {
     std::shared_ptr<const std::vector<ViewerMaterial>> materials_;  // the scene's, as shown
     std::optional<PipelineOptions> saved_options_;                  // see ViewerStatistics::saved_options
     std::string remesh_unavailable_;
-    // The pipeline has a solver: prepare() returned (it can throw after counting a form-factor pass).
-    bool solver_ready_ = false;
     std::function<void()> on_change_;
     std::atomic<std::uint64_t> changes_{0};
     tbb::task_arena arena_;  // where the work's parallel stages run
