@@ -124,7 +124,9 @@ SavedSolution RadiosityPipeline::saved_solution() const {
     SavedSolution saved{.scene = loaded_.scene, .solution = solution(), .display_gather = {}};
     saved.scene.warnings.clear();
     // The display patches' own gather is the display's longest part; kept, opening the file skips it.
-    saved.display_gather = display_patch_gather_table(loaded_.scene, saved.solution);
+    saved.display_gather = display_ && !display_->traced.patch_gather.empty()
+                               ? display_->traced.patch_gather
+                               : display_patch_gather_table(loaded_.scene, saved.solution);
     return saved;
 }
 
@@ -282,7 +284,8 @@ void RadiosityPipeline::edit_outside_light(const std::string& sky, const std::st
     scene.sky = new_sky;
     scene.sun = new_sun;
     try {
-        update_outside_light(*built_->transport, patches(), scene, options_.form_factors.seed, progress);
+        update_outside_light(*built_->transport, patches(), element_rays(), scene, options_.form_factors.seed,
+                             progress);
     } catch (...) {
         scene.sky = old_sky;
         scene.sun = old_sun;
@@ -327,15 +330,35 @@ void RadiosityPipeline::prepare_display(Progress* progress) const {
     if (!display_) display_.emplace(build_display(options_.display, progress));
 }
 
+const RayScene& RadiosityPipeline::element_rays() const {
+    if (!element_rays_ || element_rays_of_ != solution_.elements) {
+        const bool built_them = built_ && built_->element_rays && built_->patches == solution_.elements.get();
+        element_rays_ =
+            built_them ? built_->element_rays : std::make_shared<const RayScene>(*solution_.elements);
+        element_rays_of_ = solution_.elements;
+    }
+    return *element_rays_;
+}
+
 DisplayMesh RadiosityPipeline::build_display(const DisplayOptions& options, Progress* progress) const {
     if (has_solution()) {
         const GatherTable* traced = traced_display_gather_.empty() ? nullptr : &traced_display_gather_;
-        return build_solution_display(loaded_.scene, solution(), options, traced, progress);
+        return build_solution_display(loaded_.scene, solution(), options, traced, progress, &element_rays());
     }
     if (loaded_albedo_.size() != loaded_.patches->size())
         loaded_albedo_ = patch_albedo(loaded_.scene, *loaded_.patches);
     return build_preview_display(loaded_.scene, *loaded_.patches, options, loaded_albedo_,
                                  options_.form_factors.seed);
+}
+
+bool RadiosityPipeline::redraw_display(DisplayMesh& display, const DisplayOptions& options,
+                                       Progress* progress) const {
+    if (has_solution() && display_traces_fit(display, loaded_.scene, solution())) {
+        relight_display(display, loaded_.scene, solution());
+        return false;
+    }
+    display = build_display(options, progress);
+    return true;
 }
 
 std::vector<glm::dvec3> RadiosityPipeline::preview_radiosity() const {

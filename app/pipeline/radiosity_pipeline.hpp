@@ -20,6 +20,7 @@
 
 namespace rad {
 
+class RayScene;
 struct SceneTransport;
 struct TransportSettings;
 
@@ -108,6 +109,11 @@ class RadiosityPipeline {
     // A display with these options: of the solution (build_solution_display), or before there is one the
     // preview (build_preview_display).
     DisplayMesh build_display(const DisplayOptions& options, Progress* progress = nullptr) const;
+    // `display` (built by build_display with `options`) drawn with the solution as it stands: only its light
+    // replaced where its geometry and traces still hold (after an edit of the materials' colours or of the
+    // sky and sun: no ray is traced), else built again. Returns whether it was built again (new geometry).
+    bool redraw_display(DisplayMesh& display, const DisplayOptions& options,
+                        Progress* progress = nullptr) const;
     // Builds display() now, reporting the final gather's progress (a render's stage that can take seconds).
     void prepare_display(Progress* progress) const;
     // E per patch of patches(): the radiosity before any light is reflected.
@@ -136,6 +142,9 @@ class RadiosityPipeline {
     SolutionSettings solution_settings() const;
     // The solution's elements from the transport just built or edited.
     void take_elements();
+    // One ray scene over the solution's elements, for everything that traces them after the transport is
+    // built (the display, an edit of the sky): the one the transport's build made where it made one.
+    const RayScene& element_rays() const;
     // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
     std::vector<glm::dvec3> element_direct() const;
     // Opened from a file: the rebuilt elements must be the file's, and the solver starts from its radiosity.
@@ -163,6 +172,8 @@ class RadiosityPipeline {
     bool continues_solution_ = false;             // opened from a file: prepare continues from its radiosity
     GatherTable traced_display_gather_;           // the file's, until prepare
     mutable std::optional<DisplayMesh> display_;  // of patches(), once asked for
+    mutable std::shared_ptr<const RayScene> element_rays_;  // over element_rays_of_
+    mutable std::shared_ptr<const PatchMesh> element_rays_of_;
     mutable std::vector<glm::dvec3> loaded_albedo_;  // of loaded_.patches, for the preview's texel detail
     SolverMethod method_;
     SolverOptions solver_options_;

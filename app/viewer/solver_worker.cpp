@@ -287,7 +287,7 @@ void SolverWorker::show_preview() {
     progress_->begin("direct light", 0);
     display_ = pipeline_->build_display(options_.display);
     // New geometry: the direct light splits the triangles along shadow edges.
-    if (!display_.direct.vertex.empty()) publish(true, true);
+    if (!display_.light.direct.vertex.empty()) publish(true, true);
 }
 
 void SolverWorker::start_solver(const WorkerCommands::Reset& reset, bool geometry_changed) {
@@ -323,8 +323,9 @@ void SolverWorker::edit_outside_light(const WorkerCommands::OutsideLight& light)
 }
 
 void SolverWorker::run_after_edit() {
-    // The emitters' direct light at the vertices, and a textured surface's emission, change with an edit.
-    display_ = pipeline_->build_display(options_.display, progress_.get());
+    // The display's light changes with an edit; its geometry too where the emitters changed (their light
+    // at the vertices splits triangles along shadow edges).
+    const bool new_geometry = pipeline_->redraw_display(display_, options_.display, progress_.get());
     start_history_from_solver();
     const bool can_step = !pipeline_->solver().report().finished();
     set_can_step(can_step);
@@ -333,7 +334,8 @@ void SolverWorker::run_after_edit() {
         commands_.set_running(can_step);  // live: the light settles to the edit without being asked
         snapshot_.error.clear();
     }
-    publish(true, true);
+    // Textured ranges carry their material's colours with the geometry.
+    publish(new_geometry || !display_.textured.empty(), true);
 }
 
 void SolverWorker::write(const WorkerCommands::Write& file) {

@@ -142,7 +142,7 @@ TEST(DisplayEdgeSplit, ANewVertexShowsWhatItsEdgeShowedThere) {
 
 TEST(DisplayEdgeSplit, RefusesAMeshWhoseVertexLightIsMade) {
     DisplayMesh d = cornell_display();
-    d.direct.vertex.assign(d.vertex_count(), glm::vec3(0.0f));
+    d.light.direct.vertex.assign(d.vertex_count(), glm::vec3(0.0f));
     EXPECT_THROW(split_display_edges(d, some_edges(d)), std::invalid_argument);
 }
 

@@ -1,4 +1,4 @@
-// A solution drawn on patches of the display's own (make_display_patches, add_display_patch_gather): each
+// A solution drawn on patches of the display's own (make_display_patches, trace_display_patch_gather): each
 // display patch takes the leaves under it, by area and exposed share; its own gather shows a furnace's exact
 // radiosity, and while the bounces are stepped it shows the bounces of its step.
 #include <gtest/gtest.h>
@@ -131,14 +131,16 @@ GatheredFurnace gathered_furnace(std::size_t budget = kPatchGatherRayBudget) {
     const std::vector<glm::dvec3> emission = own.from_solution.apply(t.emission);
     const std::vector<glm::dvec3> reflectance = own.from_solution.apply(t.reflectance);
     g.display = build_display_mesh(own.mesh);
-    add_display_patch_gather(g.display, {.patches = &own.mesh,
-                                         .exposed = own.exposed,
-                                         .emission = emission,
-                                         .reflectance = reflectance,
-                                         .solution_rays = &rays,
-                                         .source = std::vector<glm::dvec3>(leaves.size(), glm::dvec3(0.0)),
-                                         .ray_budget = budget});
     g.display.from_solution = std::move(own.from_solution);
+    trace_display_patch_gather(g.display, {.patches = &own.mesh,
+                                           .exposed = own.exposed,
+                                           .solution = &leaves,
+                                           .solution_rays = &rays,
+                                           .ray_budget = budget});
+    light_display_patch_gather(g.display,
+                               {.emission = emission,
+                                .reflectance = reflectance,
+                                .source = std::vector<glm::dvec3>(leaves.size(), glm::dvec3(0.0))});
     return g;
 }
 
@@ -152,8 +154,8 @@ double worst_error(const std::vector<glm::vec3>& shown, double b) {
 
 TEST(DisplayPatchGather, AClusteredFurnaceShowsItsExactRadiosityAtEveryVertex) {
     GatheredFurnace g = gathered_furnace();
-    ASSERT_FALSE(g.display.patch_gather.empty());
-    const DisplayMesh::PatchGather& gather = g.display.patch_gather;
+    ASSERT_FALSE(g.display.traced.patch_gather.empty());
+    const GatherTable& gather = g.display.traced.patch_gather;
     // A closed room: every ray meets a front, so each row's weights add up to 1.
     for (std::size_t d = 0; d < g.display.patch_count; ++d) {
         const double sum = std::accumulate(gather.weight.begin() + gather.row_begin[d],
@@ -176,7 +178,7 @@ TEST(DisplayPatchGather, WhileBouncesAreSteppedAPatchShowsTheBouncesOfItsStep) {
 
 TEST(DisplayPatchGather, BelowTheFewestRaysPerPatchTheDisplayKeepsTheLeavesMeans) {
     const GatheredFurnace g = gathered_furnace(kPatchGatherMinRays - 1);
-    EXPECT_TRUE(g.display.patch_gather.empty());
+    EXPECT_TRUE(g.display.traced.patch_gather.empty());
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ TEST_P(TexturedDisplay, WithoutTheSceneNothingIsTextured) {
     const DisplayMesh plain = build_display_mesh(*solved->system.patches, {.mode = GetParam()});
     EXPECT_TRUE(plain.textured.empty());
     EXPECT_TRUE(plain.texcoords.empty());
-    EXPECT_TRUE(plain.patch_irradiance.empty());
+    EXPECT_TRUE(plain.light.patch_irradiance.empty());
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, TexturedDisplay, ::testing::Values(ColourMode::smooth, ColourMode::flat));

@@ -173,18 +173,18 @@ TEST(VertexDirectLight, SplittingAlongTheShadowEdgeDrawsItCloser) {
 
 TEST(VertexDirectLight, ShowsOnlyWhatTheRadiosityHoldsOfTheDirectLight) {
     Shown s = show(load_scene(kShadowEdge), 0.1, true);
-    ASSERT_FALSE(s.display.direct.vertex.empty());
-    EXPECT_TRUE(draws_vertex_direct_light(*s.solved->system.patches, s.display.direct.emission));
+    ASSERT_FALSE(s.display.light.direct.vertex.empty());
+    EXPECT_TRUE(draws_vertex_direct_light(*s.solved->system.patches, s.display.light.direct.emission));
     const Transport& t = *s.solved->system.transport;
     EXPECT_EQ(direct_light_share(s.display, t.emission), 0.0);
     EXPECT_NEAR(direct_light_share(s.display, s.solved->radiosity), 1.0, 1e-9);
     // Before any bounce the vertices show the emission alone, as without direct light at vertices.
     DisplayMesh plain = s.display;
-    plain.direct = {};
+    plain.light.direct = {};
     EXPECT_EQ(vertex_radiance(s.display, t.emission), vertex_radiance(plain, t.emission));
     // The floor's light is all direct: a view of the first bounce alone (share 1) shows it as the whole
     // solution does.
-    const std::vector<glm::vec3> first = vertex_radiance(s.display, s.display.direct.patch, 1.0);
+    const std::vector<glm::vec3> first = vertex_radiance(s.display, s.display.light.direct.patch, 1.0);
     const std::vector<glm::vec3> whole = vertex_radiance(s.display, s.solved->radiosity);
     int floor_vertices = 0;
     for (std::size_t v = 0; v < s.display.vertex_count(); ++v) {
@@ -212,7 +212,7 @@ TEST(VertexDirectLight, LeavesSourcesAsLargeAsAFurnaceToThePatches) {
                                       .reflectance = zeros,
                                       .area = area,
                                       .patch_direct = zeros});
-    EXPECT_TRUE(display.direct.vertex.empty());
+    EXPECT_TRUE(display.light.direct.vertex.empty());
     EXPECT_EQ(direct_light_share(display, emitted), 0.0);
     EXPECT_FALSE(draws_vertex_direct_light(patches, emitted));
 }

@@ -60,7 +60,7 @@ TEST(FinalGather, AVertexBesideABrightFloorShowsItsPointFactor) {
     const std::size_t n = patches.size();
     const std::vector<glm::dvec3> zero(n, glm::dvec3(0.0));
     Gathered g = gather(std::move(solved), zero, zero);
-    ASSERT_FALSE(g.display.gather.empty());
+    ASSERT_FALSE(g.display.traced.gather.empty());
     std::vector<glm::dvec3> radiosity(n, glm::dvec3(0.0));
     for (std::size_t q = 0; q < n; ++q)
         if (patches.patches[q].surface == 0) radiosity[q] = glm::dvec3(1.0);
@@ -101,8 +101,8 @@ TEST(FinalGather, NearSurfacesOnlyTheFloorBesideTheWallGathers) {
     // wall meets nothing that near and keeps its patches; one within half a patch size of it sends half its
     // rays into the wall, most of them nearer than 0.2, and gathers with kNearGatherRays rays.
     const Gathered g = gathered_near_surfaces(make_perpendicular_squares());
-    ASSERT_FALSE(g.display.gather.empty());
-    const DisplayMesh::FinalGather& rows = g.display.gather;
+    ASSERT_FALSE(g.display.traced.gather.empty());
+    const GatherTable& rows = g.display.traced.gather;
     int far = 0, near = 0;
     bool finer = false;
     for (std::size_t v = 0; v < g.display.vertex_count(); ++v) {
@@ -151,8 +151,8 @@ TEST(FinalGather, NearSurfacesOnlyFacesSmallerThanAPatchMakeNoVertexGather) {
         }
     }
     const Gathered g = gathered_near_surfaces(builder.build());
-    ASSERT_FALSE(g.display.gather.empty());
-    const DisplayMesh::FinalGather& rows = g.display.gather;
+    ASSERT_FALSE(g.display.traced.gather.empty());
+    const GatherTable& rows = g.display.traced.gather;
     int under = 0, beside_wall = 0;
     for (std::size_t v = 0; v < g.display.vertex_count(); ++v) {
         if (vertex_surface(g.display, *g.solved->system.patches, v) != 0) continue;
@@ -177,7 +177,7 @@ TEST(FinalGather, AClusteredFurnaceShowsItsExactRadiosityAtEveryVertex) {
     const std::vector<glm::dvec3> radiosity = solved->radiosity;
     const std::vector<glm::dvec3> zero(emission.size(), glm::dvec3(0.0));
     const Gathered g = gather(std::move(solved), emission, zero);
-    ASSERT_FALSE(g.display.gather.empty());
+    ASSERT_FALSE(g.display.traced.gather.empty());
     const std::vector<glm::vec3> shown = vertex_radiance(g.display, radiosity);
     double worst = 0.0;
     for (const glm::vec3& l : shown)
@@ -190,7 +190,7 @@ TEST(FinalGather, BelowTheFewestRaysPerVertexTheDisplayKeepsItsPatches) {
     const std::vector<glm::dvec3> zero(solved->system.patches->size(), glm::dvec3(0.0));
     const std::size_t vertices = build_display_mesh(*solved->system.patches).vertex_count();
     const Gathered g = gather(std::move(solved), zero, zero, vertices * (kFinalGatherMinRays - 1));
-    EXPECT_TRUE(g.display.gather.empty());
+    EXPECT_TRUE(g.display.traced.gather.empty());
 }
 
 TEST(FinalGather, ArraysOfAnotherSizeAreRefused) {

@@ -39,7 +39,7 @@ TEST(HierarchyDisplay, ClusteredLeavesAreDrawnOnPatchesOfTheUniformSize) {
     EXPECT_EQ(display.patch_count, uniform);
     EXPECT_EQ(display.solution_patch_count(), pipeline.patches().size());
     EXPECT_GT(pipeline.patches().size(), uniform);  // fewer than the leaves
-    EXPECT_FALSE(display.patch_gather.empty());
+    EXPECT_FALSE(display.traced.patch_gather.empty());
     EXPECT_EQ(pipeline.vertex_radiance().size(), display.vertex_count());
 
     DisplayOptions flat;
@@ -58,10 +58,10 @@ TEST(HierarchyDisplay, TheDisplaysPatchesHoldEachSurfacesPower) {
     const std::vector<glm::dvec3>& b = pipeline.solver().display_solution();
     std::vector<std::uint32_t> leaf_surface;
     for (const Patch& p : pipeline.patches().patches) leaf_surface.push_back(p.surface);
-    ASSERT_EQ(display.direct.area.size(), display.patch_count);  // the display patches' exposed areas
+    ASSERT_EQ(display.light.direct.area.size(), display.patch_count);  // the display patches' exposed areas
     const auto held = surface_power(leaf_surface, pipeline.transport().area, b);
     const auto shown =
-        surface_power(display.patch_surface, display.direct.area, display.from_solution.apply(b));
+        surface_power(display.patch_surface, display.light.direct.area, display.from_solution.apply(b));
     ASSERT_EQ(shown.size(), held.size());
     for (const auto& [surface, power] : held) {
         EXPECT_NEAR(shown.at(surface), power, 0.01 * power) << "surface " << surface;

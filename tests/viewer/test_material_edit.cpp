@@ -1,8 +1,10 @@
 // The viewer's material edits: a reflectance or an emitter changed on a solved scene, the solver continued
 // from the solution as it stood with the same form factors, reaches what a fresh solve of the edited file
-// gives, and balances its energy; a bad value is refused with the material's name.
+// gives, and balances its energy; a bad value is refused with the material's name. The display after an
+// edit of colours or of the sky keeps its geometry and shows what a new display would.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -119,6 +121,39 @@ TEST(MaterialEdit, BadValuesAndUnknownNamesAreRefusedWithTheName) {
     EXPECT_NE(message("white", glm::dvec3(1.2), glm::dvec3(0.0)).find("white"), std::string::npos);
     EXPECT_NE(message("white", glm::dvec3(0.5), glm::dvec3(-1.0)).find("white"), std::string::npos);
     EXPECT_NE(message("no such", glm::dvec3(0.5), glm::dvec3(0.0)).find("no such"), std::string::npos);
+}
+
+// The largest difference between two displays' radiance for the pipeline's solution as it stands.
+double largest_difference(const RadiosityPipeline& pipeline, const DisplayMesh& a, const DisplayMesh& b) {
+    const std::vector<glm::vec3> x = vertex_radiance(a, pipeline.solution().shown_radiosity);
+    const std::vector<glm::vec3> y = vertex_radiance(b, pipeline.solution().shown_radiosity);
+    EXPECT_EQ(x.size(), y.size());
+    double largest = 0.0;
+    for (std::size_t v = 0; v < std::min(x.size(), y.size()); ++v)
+        for (int c = 0; c < 3; ++c)
+            largest = std::max(largest, static_cast<double>(std::abs(x[v][c] - y[v][c])));
+    return largest;
+}
+
+TEST(MaterialEdit, AColourEditRedrawsTheLightOnTheSameGeometry) {
+    for (const char* subdivision : {"uniform", "hierarchical"}) {
+        SCOPED_TRACE(subdivision);
+        RadiosityPipeline pipeline(options_for("builtin:cornell", subdivision));
+        pipeline.solve();
+        const DisplayOptions options;
+        DisplayMesh display = pipeline.build_display(options);
+        const std::vector<glm::vec3> positions = display.positions;
+        pipeline.edit_material("red", {0.2, 0.5, 0.7}, {0.0, 0.0, 0.0});
+        pipeline.solve();
+        EXPECT_FALSE(pipeline.redraw_display(display, options));  // no new geometry, no ray
+        EXPECT_EQ(display.positions, positions);
+        EXPECT_LT(largest_difference(pipeline, display, pipeline.build_display(options)), 1e-6);
+        // The lamp's light changed: its light at the vertices is traced again.
+        pipeline.edit_material("light", {0.78, 0.78, 0.78}, {8.0, 12.0, 16.0});
+        pipeline.solve();
+        EXPECT_TRUE(pipeline.redraw_display(display, options));
+        EXPECT_LT(largest_difference(pipeline, display, pipeline.build_display(options)), 1e-6);
+    }
 }
 
 // The sky and sun edited on a solved scene open to the outside: the light measured again on the same form

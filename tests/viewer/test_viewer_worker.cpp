@@ -104,7 +104,7 @@ TEST(ViewerWorker, AGatheredVertexShowsTheBouncesOfItsStep) {
     EXPECT_EQ(snapshot.radiance->step, 3u);
     RadiosityPipeline pipeline(options);
     pipeline.prepare();
-    const DisplayMesh::FinalGather& rows = pipeline.display().gather;
+    const GatherTable& rows = pipeline.display().traced.gather;
     ASSERT_FALSE(rows.empty());
     const std::vector<glm::vec3> two = radiance_after(options, 2), three = radiance_after(options, 3);
     const std::vector<glm::vec3>& shown = snapshot.radiance->cumulative;

@@ -89,7 +89,8 @@ std::vector<DisplayEdge> interior_edges(const DisplayMesh& display) {
 }
 
 std::size_t split_display_edges(DisplayMesh& display, std::span<const DisplayEdge> edges) {
-    if (!display.direct.vertex.empty())
+    if (!display.traced.direct_irradiance.empty() || !display.traced.gather.empty() ||
+        !display.light.direct.vertex.empty())
         throw std::invalid_argument("split_display_edges: the mesh's vertex light is already made");
     const std::size_t first = display.vertex_count();
     std::unordered_map<std::uint64_t, std::uint32_t> midpoint;

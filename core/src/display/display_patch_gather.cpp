@@ -30,8 +30,8 @@ struct Scratch {
     std::vector<std::pair<std::uint32_t, double>> met;
 };
 
-void gather_row(const DisplayPatchGatherInput& input, std::uint32_t d, int count, double offset, Scratch& s,
-                GatherRow& row) {
+void gather_row(const DisplayPatchGatherTraceInput& input, std::uint32_t d, int count, double offset,
+                Scratch& s, GatherRow& row) {
     s.rays.resize(static_cast<std::size_t>(count));
     s.weights.resize(s.rays.size());
     s.hits.resize(s.rays.size());
@@ -57,36 +57,28 @@ void gather_row(const DisplayPatchGatherInput& input, std::uint32_t d, int count
 }
 
 // Whether `input.traced` is a table for these display patches over these solution patches.
-bool takes_traced(const DisplayPatchGatherInput& input, std::size_t n) {
+bool takes_traced(const DisplayPatchGatherTraceInput& input, std::size_t n) {
     const GatherTable* t = input.traced;
     if (!t || t->row_begin.size() != n + 1 || t->row_begin.front() != 0 ||
         t->row_begin.back() != t->patch.size() || t->weight.size() != t->patch.size())
         return false;
     return std::all_of(t->patch.begin(), t->patch.end(),
-                       [&](std::uint32_t q) { return q < input.source.size(); });
-}
-
-// What a display patch's row is evaluated with besides the row.
-void finish(DisplayMesh::PatchGather& gather, const DisplayPatchGatherInput& input) {
-    gather.emission.assign(input.emission.begin(), input.emission.end());
-    gather.reflectance.assign(input.reflectance.begin(), input.reflectance.end());
-    gather.source.assign(input.source.begin(), input.source.end());
+                       [&](std::uint32_t q) { return q < input.solution->size(); });
 }
 
 }  // namespace
 
-void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInput& input) {
+void trace_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherTraceInput& input) {
     const PatchMesh& patches = *input.patches;
     const std::size_t n = patches.size();
-    if (input.exposed.size() != n || input.emission.size() != n || input.reflectance.size() != n ||
-        display.patch_count != n) {
-        throw std::invalid_argument("add_display_patch_gather: the arrays do not have one entry per patch");
+    if (input.exposed.size() != n || display.patch_count != n) {
+        throw std::invalid_argument("trace_display_patch_gather: the arrays do not have one entry per patch");
     }
-    display.patch_gather = {};
+    display.traced.patch_gather = {};
+    display.light.patch_gather = {};
     if (n == 0) return;
     if (takes_traced(input, n)) {
-        static_cast<GatherTable&>(display.patch_gather) = *input.traced;
-        finish(display.patch_gather, input);
+        display.traced.patch_gather = *input.traced;
         return;
     }
     const int count = static_cast<int>(std::min<std::size_t>(kPatchGatherRays, input.ray_budget / n));
@@ -106,9 +98,20 @@ void add_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherInpu
                 gather_row(input, static_cast<std::uint32_t>(d), count, offset, scratch, rows[d]);
             if (progress) progress->advance(r.size());
         });
-    DisplayMesh::PatchGather& gather = display.patch_gather;
-    append_rows(rows, gather);
-    finish(gather, input);
+    append_rows(rows, display.traced.patch_gather);
+}
+
+void light_display_patch_gather(DisplayMesh& display, const DisplayPatchGatherArrays& arrays) {
+    if (arrays.emission.size() != display.patch_count || arrays.reflectance.size() != display.patch_count ||
+        arrays.source.size() != display.solution_patch_count()) {
+        throw std::invalid_argument("light_display_patch_gather: the arrays do not have one entry per patch");
+    }
+    DisplayLight::PatchGather& gather = display.light.patch_gather;
+    gather = {};
+    if (display.traced.patch_gather.empty()) return;
+    gather.emission.assign(arrays.emission.begin(), arrays.emission.end());
+    gather.reflectance.assign(arrays.reflectance.begin(), arrays.reflectance.end());
+    gather.source.assign(arrays.source.begin(), arrays.source.end());
 }
 
 }  // namespace rad

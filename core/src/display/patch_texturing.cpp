@@ -48,19 +48,32 @@ void PatchTexturing::finish(DisplayMesh& display) const {
         while (end < n && textured(display.triangle_patch[end]) &&
                mesh_.patches[display.triangle_patch[end]].surface == surface)
             ++end;
-        const Material& material = texturing_.scene->surfaces[surface].material;
-        display.textured.push_back(
-            {static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(end - t), material.texture,
-             glm::vec3(albedo_scale(*material.texture, material.reflectance)), glm::vec3(material.emission)});
+        display.textured.push_back({static_cast<std::uint32_t>(t), static_cast<std::uint32_t>(end - t),
+                                    texturing_.scene->surfaces[surface].material.texture});
         t = end;
     }
-    display.patch_irradiance.assign(mesh_.size(), {});
-    for (std::size_t q = 0; q < mesh_.size(); ++q) {
-        if (!textured(q)) continue;
-        const glm::dvec3& rho = texturing_.reflectance[q];
-        DisplayMesh::PatchIrradiance& p = display.patch_irradiance[q];
-        p.textured = true;
-        p.emission = texturing_.scene->surfaces[mesh_.patches[q].surface].material.emitted_radiosity();
+    display.patch_textured = textured_;
+    light_textured_patches(display, *texturing_.scene, texturing_.reflectance);
+}
+
+void light_textured_patches(DisplayMesh& display, const Scene& scene,
+                            std::span<const glm::dvec3> reflectance) {
+    display.light.patch_irradiance.clear();
+    if (display.patch_textured.empty()) return;
+    if (reflectance.size() != display.patch_count)
+        throw std::invalid_argument("display texturing: the reflectance does not have one entry per patch");
+    for (DisplayMesh::TexturedRange& range : display.textured) {
+        const std::uint32_t surface = display.patch_surface[display.triangle_patch[range.first_triangle]];
+        const Material& material = scene.surfaces.at(surface).material;
+        range.albedo_scale = glm::vec3(albedo_scale(*material.texture, material.reflectance));
+        range.emitted_radiance = glm::vec3(material.emission);
+    }
+    display.light.patch_irradiance.assign(display.patch_count, {});
+    for (std::size_t q = 0; q < display.patch_count; ++q) {
+        if (!display.textured_patch(static_cast<std::uint32_t>(q))) continue;
+        const glm::dvec3& rho = reflectance[q];
+        DisplayLight::PatchIrradiance& p = display.light.patch_irradiance[q];
+        p.emission = scene.surfaces.at(display.patch_surface[q]).material.emitted_radiosity();
         for (int c = 0; c < 3; ++c) p.inverse_albedo[c] = rho[c] > 0.0 ? 1.0 / rho[c] : 0.0;
     }
 }

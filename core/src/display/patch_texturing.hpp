@@ -8,6 +8,7 @@
 
 #include "rad/display/display_mesh.hpp"
 #include "rad/mesh/patch_mesh.hpp"
+#include "rad/scene/scene.hpp"
 
 namespace rad {
 
@@ -23,8 +24,9 @@ class PatchTexturing {
     // The texture coordinates of a textured patch at `point`; (0, 0) for any other patch.
     glm::vec2 texcoord(std::size_t patch, const glm::dvec3& point) const;
 
-    // The display's textured ranges (runs of textured triangles of one surface) and what vertex_radiance
-    // needs per patch; the triangles must be final.
+    // The display's textured ranges (runs of textured triangles of one surface), which patches are textured
+    // and what vertex_radiance needs per patch (light_textured_patches); the triangles and patch_surface
+    // must be final.
     void finish(DisplayMesh& display) const;
 
   private:
@@ -33,5 +35,11 @@ class PatchTexturing {
     std::vector<std::uint8_t> textured_;
     bool any_ = false;
 };
+
+// The light's part of texel detail, from `scene`'s materials and each display patch's reflectance: the
+// textured ranges' albedo scale and emitted radiance, and DisplayLight::patch_irradiance. Throws
+// std::invalid_argument when the reflectance does not have one entry per display patch.
+void light_textured_patches(DisplayMesh& display, const Scene& scene,
+                            std::span<const glm::dvec3> reflectance);
 
 }  // namespace rad

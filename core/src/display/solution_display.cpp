@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "display/display_patch_gather.hpp"
 #include "display/display_patches.hpp"
+#include "display/patch_texturing.hpp"
 #include "display/vertex_direct_light.hpp"
 #include "display/vertex_final_gather.hpp"
 #include "rad/ray/ray_scene.hpp"
@@ -30,32 +32,6 @@ double display_patch_size(const SolutionSettings& settings) {
     return settings.patch_size / method->base_patch_scale;
 }
 
-// The arrays a display's light takes, on the patches it is drawn on.
-struct DrawnPatches {
-    const PatchMesh* mesh = nullptr;
-    std::vector<double> area;
-    std::vector<glm::dvec3> reflectance, emission, direct;
-};
-
-DrawnPatches solution_patches(const Solution& solution) {
-    return {solution.elements.get(), solution.area, solution.reflectance, solution.emission, solution.direct};
-}
-
-// The solution's arrays carried to the display's patches: means of the elements under each; the exposed area
-// is the display patch's area times its exposed share.
-DrawnPatches restricted_patches(const DisplayPatches& display, const Solution& solution) {
-    const PatchRestriction& r = display.from_solution;
-    DrawnPatches out{&display.mesh,
-                     {},
-                     r.apply(solution.reflectance),
-                     r.apply(solution.emission),
-                     r.apply(solution.direct)};
-    out.area.resize(display.mesh.size());
-    for (std::size_t d = 0; d < out.area.size(); ++d)
-        out.area[d] = display.exposed[d] * display.mesh.patches[d].area;
-    return out;
-}
-
 std::vector<double> exposed_shares(const Solution& solution) {
     const PatchMesh& elements = *solution.elements;
     std::vector<double> exposed(elements.size());
@@ -66,130 +42,177 @@ std::vector<double> exposed_shares(const Solution& solution) {
     return exposed;
 }
 
+// Per display patch, what it emits itself.
+std::vector<glm::dvec3> emitted_on_display(const Scene& scene, const DisplayMesh& display) {
+    std::vector<glm::dvec3> emitted(display.patch_count);
+    for (std::size_t q = 0; q < emitted.size(); ++q)
+        emitted[q] = scene.surfaces.at(display.patch_surface[q]).material.emitted_radiosity();
+    return emitted;
+}
+
 // What the gathers subtract from the radiosity they meet: E where the vertices carry the emitters' direct
 // light themselves (so it is not gathered twice), else nothing.
-std::vector<glm::dvec3> gathered_source(const Scene& scene, const PatchMesh& patches,
-                                        bool vertices_hold_direct) {
-    if (!vertices_hold_direct) return std::vector<glm::dvec3>(patches.size(), glm::dvec3(0.0));
-    return emitted_radiosity(scene, patches);
+std::vector<glm::dvec3> gathered_source(std::vector<glm::dvec3> emitted, bool vertices_hold_direct) {
+    if (!vertices_hold_direct) std::fill(emitted.begin(), emitted.end(), glm::dvec3(0.0));
+    return emitted;
 }
 
-// A display of the solution's elements, or of patches of the display's own with the arrays carried over.
-class DrawnSolution {
-  public:
-    DrawnSolution(const Scene& scene, const Solution& solution, bool smooth) : solution_(solution) {
-        const double patch_size = display_patch_size(solution.settings);
-        if (smooth && patch_size > 0.0) {
-            solution_rays_.emplace(*solution.elements);
-            own_.emplace(make_display_patches(scene, *solution.elements, *solution_rays_,
-                                              exposed_shares(solution), patch_size));
-        }
-        drawn_ = own_ ? restricted_patches(*own_, solution) : solution_patches(solution);
-    }
-
-    const DrawnPatches& drawn() const { return drawn_; }
-    bool has_own_patches() const { return own_.has_value(); }
-
-    // The display patches' own gather of their last bounce from the solution's elements.
-    void add_patch_gather(DisplayMesh& display, const Scene& scene, bool vertices_hold_direct,
-                          const GatherTable* traced, Progress* progress) const {
-        add_display_patch_gather(display,
-                                 {.patches = &own_->mesh,
-                                  .exposed = own_->exposed,
-                                  .emission = drawn_.emission,
-                                  .reflectance = drawn_.reflectance,
-                                  .solution_rays = &*solution_rays_,
-                                  .source = gathered_source(scene, *solution_.elements, vertices_hold_direct),
-                                  .seed = solution_.settings.seed,
-                                  .progress = progress,
-                                  .traced = traced});
-    }
-
-    PatchRestriction take_restriction() { return own_ ? std::move(own_->from_solution) : PatchRestriction{}; }
-
-  private:
-    const Solution& solution_;
-    std::optional<RayScene> solution_rays_;
-    std::optional<DisplayPatches> own_;
-    DrawnPatches drawn_;
+// The solution's arrays on the patches the display is drawn on: its own, or the means of the elements under
+// each display patch, whose exposed area is the display patch's area times its exposed share.
+struct DrawnArrays {
+    std::vector<double> area;
+    std::vector<glm::dvec3> reflectance, emission, direct;
 };
 
-// On the display's own patches each vertex keeps its exact value: the patches' means of the direct light
-// are the elements', which a hierarchy links to larger elements (constant over them), and the patches' own
-// gather holds the rest of their light.
-void add_direct_light(DisplayMesh& display, const Scene& scene, const DrawnPatches& drawn,
-                      const RayScene& rays, std::uint64_t seed, bool keep_patch_means) {
-    const std::vector<glm::dvec3> emitted = emitted_radiosity(scene, *drawn.mesh);
-    add_vertex_direct_light(display, {.patches = drawn.mesh,
-                                      .rays = &rays,
-                                      .emitted = emitted,
-                                      .emission = drawn.emission,
-                                      .reflectance = drawn.reflectance,
-                                      .area = drawn.area,
-                                      .patch_direct = drawn.direct,
-                                      .seed = seed,
-                                      .keep_patch_means = keep_patch_means});
+DrawnArrays drawn_arrays(const DisplayMesh& display, const Solution& solution) {
+    const PatchRestriction& r = display.from_solution;
+    if (r.empty()) return {solution.area, solution.reflectance, solution.emission, solution.direct};
+    return {display.own_patch_area, r.apply(solution.reflectance), r.apply(solution.emission),
+            r.apply(solution.direct)};
 }
 
-void add_final_gather(DisplayMesh& display, const Scene& scene, const DrawnPatches& drawn,
-                      const RayScene& rays, bool vertices_hold_direct, bool near_surfaces_only,
-                      std::uint64_t seed, Progress* progress) {
-    add_vertex_final_gather(display, {.patches = drawn.mesh,
-                                      .rays = &rays,
-                                      .emission = drawn.emission,
-                                      .reflectance = drawn.reflectance,
-                                      .source = gathered_source(scene, *drawn.mesh, vertices_hold_direct),
-                                      .seed = seed,
-                                      .near_surfaces_only = near_surfaces_only,
-                                      .progress = progress});
+// The solution drawn on patches of the display's own: the patches, how they take the solution's values, and
+// the rays over the solution's elements that found that.
+struct OwnPatches {
+    DisplayPatches patches;
+    const RayScene* element_rays = nullptr;
+};
+
+std::optional<OwnPatches> own_patches(const Scene& scene, const Solution& solution, const RayScene& rays) {
+    const double patch_size = display_patch_size(solution.settings);
+    if (!(patch_size > 0.0)) return std::nullopt;
+    return OwnPatches{
+        make_display_patches(scene, *solution.elements, rays, exposed_shares(solution), patch_size), &rays};
+}
+
+void trace_patch_gather(DisplayMesh& display, const Solution& solution, const OwnPatches& own,
+                        const GatherTable* traced, Progress* progress) {
+    trace_display_patch_gather(display, {.patches = &own.patches.mesh,
+                                         .exposed = own.patches.exposed,
+                                         .solution = solution.elements.get(),
+                                         .solution_rays = own.element_rays,
+                                         .seed = solution.settings.seed,
+                                         .progress = progress,
+                                         .traced = traced});
+}
+
+// The geometry and what rays find on it: the mesh of the drawn patches, the emitters' direct light at its
+// vertices (which splits triangles along shadow edges), then the gathers, which trace the vertices it made.
+void trace_display(DisplayMesh& display, const Scene& scene, const Solution& solution,
+                   const DisplayOptions& options, const PatchMesh& drawn,
+                   const std::optional<OwnPatches>& own, const RayScene& element_rays,
+                   const GatherTable* traced_patch_gather, Progress* progress) {
+    FinalGather gather =
+        options.final_gather == FinalGather::automatic ? FinalGather::near : options.final_gather;
+    const std::uint64_t seed = solution.settings.seed;
+    const std::vector<glm::dvec3> emitted = emitted_on_display(scene, display);
+    const bool direct = options.direct_light_at_vertices && draws_vertex_direct_light(drawn, emitted);
+    if (!direct && gather == FinalGather::off) {
+        if (options.direct_light_at_vertices) display.traced.direct_emitted = emitted;
+        return;
+    }
+    std::optional<RayScene> own_rays;
+    if (own) own_rays.emplace(drawn);
+    const RayScene& rays = own ? *own_rays : element_rays;
+    if (direct)
+        trace_vertex_direct_light(display,
+                                  {.patches = &drawn, .rays = &rays, .emitted = emitted, .seed = seed});
+    else if (options.direct_light_at_vertices)
+        display.traced.direct_emitted = emitted;
+    if (gather == FinalGather::off) return;
+    if (own) {
+        trace_patch_gather(display, solution, *own, traced_patch_gather, progress);
+        // Without the patches' own gather (past its ray budget) their means are the elements', which hold
+        // light linked to larger elements: every vertex gathers instead.
+        if (display.traced.patch_gather.empty() && options.final_gather == FinalGather::automatic)
+            gather = FinalGather::on;
+    }
+    trace_vertex_final_gather(display, {.patches = &drawn,
+                                        .rays = &rays,
+                                        .seed = seed,
+                                        .near_surfaces_only = gather == FinalGather::near,
+                                        .progress = progress});
 }
 
 }  // namespace
 
 DisplayMesh build_solution_display(const Scene& scene, const Solution& solution,
                                    const DisplayOptions& options, const GatherTable* traced_patch_gather,
-                                   Progress* progress) {
+                                   Progress* progress, const RayScene* element_rays) {
     check_solution_fits(scene, solution);
     const bool smooth = options.mode == ColourMode::smooth;
-    FinalGather gather = smooth ? options.final_gather : FinalGather::off;
-    if (gather == FinalGather::automatic) gather = FinalGather::near;
-    DrawnSolution solved(scene, solution, smooth);
-    const DrawnPatches& drawn = solved.drawn();
-    DisplayMesh display = build_display_mesh(*drawn.mesh, options, {&scene, drawn.reflectance});
-    if (!smooth) return display;
-    const bool direct = options.direct_light_at_vertices &&
-                        draws_vertex_direct_light(*drawn.mesh, emitted_radiosity(scene, *drawn.mesh));
-    if (!direct && gather == FinalGather::off) return display;
-    const RayScene rays(*drawn.mesh);
-    const std::uint64_t seed = solution.settings.seed;
-    // The direct light first: it splits triangles along shadow edges, and the gathers then trace the
-    // vertices it made and leave out the light it holds.
-    if (direct) add_direct_light(display, scene, drawn, rays, seed, !solved.has_own_patches());
-    const bool vertices_hold_direct = !display.direct.vertex.empty();
-    if (gather != FinalGather::off) {
-        if (solved.has_own_patches()) {
-            solved.add_patch_gather(display, scene, vertices_hold_direct, traced_patch_gather, progress);
-            // Without the patches' own gather (past its ray budget) their means are the elements', which hold
-            // light linked to larger elements: every vertex gathers instead.
-            if (display.patch_gather.empty() && options.final_gather == FinalGather::automatic)
-                gather = FinalGather::on;
-        }
-        add_final_gather(display, scene, drawn, rays, vertices_hold_direct, gather == FinalGather::near, seed,
-                         progress);
+    std::optional<RayScene> built_rays;
+    const auto rays = [&]() -> const RayScene& {
+        if (element_rays) return *element_rays;
+        if (!built_rays) built_rays.emplace(*solution.elements);
+        return *built_rays;
+    };
+    std::optional<OwnPatches> own;
+    if (smooth) own = own_patches(scene, solution, rays());
+    const PatchMesh& drawn = own ? own->patches.mesh : *solution.elements;
+    const std::vector<glm::dvec3> drawn_reflectance =
+        own ? own->patches.from_solution.apply(solution.reflectance) : solution.reflectance;
+    DisplayMesh display = build_display_mesh(drawn, options, {&scene, drawn_reflectance});
+    if (own) {
+        display.from_solution = std::move(own->patches.from_solution);
+        display.own_patch_area.resize(drawn.size());
+        for (std::size_t d = 0; d < drawn.size(); ++d)
+            display.own_patch_area[d] = own->patches.exposed[d] * drawn.patches[d].area;
     }
-    display.from_solution = solved.take_restriction();
+    if (smooth) {
+        // The drawn patches' rays are needed only where something is traced.
+        const bool traces = options.direct_light_at_vertices || options.final_gather != FinalGather::off;
+        if (traces)
+            trace_display(display, scene, solution, options, drawn, own, rays(), traced_patch_gather,
+                          progress);
+    }
+    relight_display(display, scene, solution);
     return display;
+}
+
+bool display_traces_fit(const DisplayMesh& display, const Scene& scene, const Solution& solution) {
+    if (display.solution_patch_count() != solution.elements->size()) return false;
+    if (display.traced.direct_emitted.empty()) return true;
+    return display.traced.direct_emitted == emitted_on_display(scene, display);
+}
+
+void relight_display(DisplayMesh& display, const Scene& scene, const Solution& solution) {
+    check_solution_fits(scene, solution);
+    if (!display_traces_fit(display, scene, solution))
+        throw std::invalid_argument("relight_display: the display was traced for other elements or emitters");
+    const DrawnArrays drawn = drawn_arrays(display, solution);
+    light_textured_patches(display, scene, drawn.reflectance);
+    // On the display's own patches each vertex keeps its exact value: the patches' means of the direct light
+    // are the elements', which a hierarchy links to larger elements (constant over them), and the patches'
+    // own gather holds the rest of their light.
+    light_vertex_direct_light(display, {.emission = drawn.emission,
+                                        .reflectance = drawn.reflectance,
+                                        .area = drawn.area,
+                                        .patch_direct = drawn.direct,
+                                        .keep_patch_means = display.from_solution.empty()});
+    const bool vertices_hold_direct = !display.light.direct.vertex.empty();
+    if (!display.from_solution.empty()) {
+        light_display_patch_gather(
+            display,
+            {.emission = drawn.emission,
+             .reflectance = drawn.reflectance,
+             .source = gathered_source(emitted_radiosity(scene, *solution.elements), vertices_hold_direct)});
+    }
+    light_vertex_final_gather(
+        display, {.emission = drawn.emission,
+                  .reflectance = drawn.reflectance,
+                  .source = gathered_source(emitted_on_display(scene, display), vertices_hold_direct)});
 }
 
 GatherTable display_patch_gather_table(const Scene& scene, const Solution& solution) {
     check_solution_fits(scene, solution);
-    const DrawnSolution solved(scene, solution, true);
-    if (!solved.has_own_patches()) return {};
+    const RayScene rays(*solution.elements);
+    const std::optional<OwnPatches> own = own_patches(scene, solution, rays);
+    if (!own) return {};
     DisplayMesh rows;  // the table alone: no geometry
-    rows.patch_count = solved.drawn().mesh->size();
-    // The table alone is kept, not what its rows subtract.
-    solved.add_patch_gather(rows, scene, false, nullptr, nullptr);
-    return std::move(static_cast<GatherTable&>(rows.patch_gather));
+    rows.patch_count = own->patches.mesh.size();
+    trace_patch_gather(rows, solution, *own, nullptr, nullptr);
+    return std::move(rows.traced.patch_gather);
 }
 
 DisplayMesh build_preview_display(const Scene& scene, const PatchMesh& patches, const DisplayOptions& options,

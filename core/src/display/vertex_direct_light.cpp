@@ -170,9 +170,8 @@ PointLight direct_irradiance(const glm::dvec3& origin, const glm::dvec3& n, cons
 // light they hold. Where a shadow's edge crosses a patch its corners keep their own values, and so do
 // vertices in umbra: the mean of a step is no value of either side, and the shadow stays sharp.
 void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> patch_direct,
-                      const std::vector<PointLight>& light, std::vector<glm::dvec3>& vertex) {
-    std::vector<std::uint8_t> kept(vertex.size(), 0);
-    for (std::size_t v = 0; v < vertex.size(); ++v) kept[v] = light[v].visibility == Visibility::none;
+                      std::vector<glm::dvec3>& vertex) {
+    const std::vector<std::uint8_t>& kept = display.traced.direct_umbra;
     std::vector<glm::dvec3> drawn(display.patch_count, glm::dvec3(0.0));
     std::vector<double> area(display.patch_count, 0.0), triangle_area(display.triangles.size());
     for (std::size_t t = 0; t < display.triangles.size(); ++t) {
@@ -189,7 +188,7 @@ void keep_patch_means(const DisplayMesh& display, std::span<const glm::dvec3> pa
         const std::uint32_t q = display.triangle_patch[t];
         if (!(area[q] > 0.0)) continue;
         glm::dvec3 held = patch_direct[q];
-        if (display.textured_patch(q)) held *= display.patch_irradiance[q].inverse_albedo;
+        if (display.textured_patch(q)) held *= display.light.patch_irradiance[q].inverse_albedo;
         const glm::dvec3 shortfall = held - drawn[q] / area[q];
         for (int k = 0; k < 3; ++k) {
             shift[display.triangles[t][k]] += triangle_area[t] * shortfall;
@@ -229,7 +228,7 @@ std::vector<PointLight> lights_at(const PatchMesh& patches, const RayScene& rays
 
 // Appends the light at the display's vertices from light.size() on; `exact` as exact_when_open decided for
 // the whole display, so the vertices a split adds are traced as the others were.
-void add_lights(const DisplayMesh& display, const VertexDirectLightInput& input, const Emitters& emitters,
+void add_lights(const DisplayMesh& display, const VertexDirectTraceInput& input, const Emitters& emitters,
                 bool exact, std::vector<PointLight>& light) {
     const std::size_t first = light.size(), count = display.vertex_count() - first;
     std::vector<glm::dvec3> origins(count), normals(count);
@@ -274,7 +273,7 @@ std::vector<ShadowEdge> shadow_edges(const DisplayMesh& display, const std::vect
 // span most of the image first): the light's steps are drawn at a half, a quarter, an eighth of the patches'
 // size instead of across whole triangles, down to an eighth of the default patch size. Where patches are
 // already that fine (a clustered room's leaves near the furniture) they resolve the light themselves.
-void split_shadow_edges(DisplayMesh& display, const VertexDirectLightInput& input, const Emitters& emitters,
+void split_shadow_edges(DisplayMesh& display, const VertexDirectTraceInput& input, const Emitters& emitters,
                         bool exact, std::vector<PointLight>& light) {
     const std::size_t budget =
         display.vertex_count() +
@@ -325,34 +324,70 @@ std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const Ray
     return irradiance;
 }
 
-void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input) {
+void trace_vertex_direct_light(DisplayMesh& display, const VertexDirectTraceInput& input) {
     const PatchMesh& patches = *input.patches;
-    const std::size_t n = patches.size();
-    if (input.emitted.size() != n || input.emission.size() != n || input.reflectance.size() != n ||
-        input.area.size() != n || input.patch_direct.size() != n || display.patch_count != n) {
-        throw std::invalid_argument("add_vertex_direct_light: the arrays do not have one entry per patch");
-    }
-    display.direct = {};
+    if (input.emitted.size() != patches.size() || display.patch_count != patches.size())
+        throw std::invalid_argument(
+            "trace_vertex_direct_light: the emission does not have one entry per patch");
+    display.traced.direct_irradiance.clear();
+    display.traced.direct_umbra.clear();
+    display.light.direct = {};
+    display.traced.direct_emitted.assign(input.emitted.begin(), input.emitted.end());
     const std::optional<Emitters> emitters = find_emitters(patches, input.emitted);
     if (!emitters) return;
     const bool exact_sums = exact_when_open(display.vertex_count(), *emitters, kVertexExactFactorBudget);
     std::vector<PointLight> light;
     add_lights(display, input, *emitters, exact_sums, light);
     if (input.split_shadow_edges) split_shadow_edges(display, input, *emitters, exact_sums, light);
+    DisplayTraces& traced = display.traced;
+    traced.direct_irradiance.resize(light.size());
+    traced.direct_umbra.resize(light.size());
+    for (std::size_t v = 0; v < light.size(); ++v) {
+        traced.direct_irradiance[v] = light[v].irradiance;
+        traced.direct_umbra[v] = light[v].visibility == Visibility::none ? 1 : 0;
+    }
+}
+
+void light_vertex_direct_light(DisplayMesh& display, const VertexDirectLightArrays& arrays) {
+    const std::size_t n = display.patch_count;
+    if (arrays.emission.size() != n || arrays.reflectance.size() != n || arrays.area.size() != n ||
+        arrays.patch_direct.size() != n) {
+        throw std::invalid_argument("light_vertex_direct_light: the arrays do not have one entry per patch");
+    }
+    display.light.direct = {};
+    const std::vector<glm::dvec3>& irradiance = display.traced.direct_irradiance;
+    if (irradiance.empty()) return;
     std::vector<glm::dvec3> exact(display.vertex_count(), glm::dvec3(0.0));
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) continue;
         const std::uint32_t q = display.weight_patch[display.weight_begin[v]];
-        exact[v] =
-            display.textured_patch(q) ? light[v].irradiance : input.reflectance[q] * light[v].irradiance;
+        exact[v] = display.textured_patch(q) ? irradiance[v] : arrays.reflectance[q] * irradiance[v];
     }
-    if (input.keep_patch_means) keep_patch_means(display, input.patch_direct, light, exact);
-    std::vector<glm::vec3> vertex(display.vertex_count());
-    for (std::size_t v = 0; v < vertex.size(); ++v) vertex[v] = glm::vec3(glm::max(exact[v], 0.0));
-    display.direct.patch.assign(input.patch_direct.begin(), input.patch_direct.end());
-    display.direct.emission.assign(input.emission.begin(), input.emission.end());
-    display.direct.area.assign(input.area.begin(), input.area.end());
-    display.direct.vertex = std::move(vertex);
+    if (arrays.keep_patch_means) keep_patch_means(display, arrays.patch_direct, exact);
+    DisplayLight::Direct& direct = display.light.direct;
+    direct.vertex.resize(display.vertex_count());
+    for (std::size_t v = 0; v < exact.size(); ++v) direct.vertex[v] = glm::vec3(glm::max(exact[v], 0.0));
+    direct.patch.assign(arrays.patch_direct.begin(), arrays.patch_direct.end());
+    direct.emission.assign(arrays.emission.begin(), arrays.emission.end());
+    direct.area.assign(arrays.area.begin(), arrays.area.end());
+}
+
+void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input) {
+    const std::size_t n = input.patches->size();
+    if (input.emission.size() != n || input.reflectance.size() != n || input.area.size() != n ||
+        input.patch_direct.size() != n) {
+        throw std::invalid_argument("add_vertex_direct_light: the arrays do not have one entry per patch");
+    }
+    trace_vertex_direct_light(display, {.patches = input.patches,
+                                        .rays = input.rays,
+                                        .emitted = input.emitted,
+                                        .seed = input.seed,
+                                        .split_shadow_edges = input.split_shadow_edges});
+    light_vertex_direct_light(display, {.emission = input.emission,
+                                        .reflectance = input.reflectance,
+                                        .area = input.area,
+                                        .patch_direct = input.patch_direct,
+                                        .keep_patch_means = input.keep_patch_means});
 }
 
 }  // namespace rad

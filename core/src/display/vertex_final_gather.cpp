@@ -32,8 +32,8 @@ struct Scratch {
 };
 
 // Traces `count` cosine-weighted rays from origin around the frame's normal into s.hits.
-void trace_rays(const VertexFinalGatherInput& input, const glm::dvec3& origin, const Frame& frame, int count,
-                RandomStream& random, Scratch& s) {
+void trace_rays(const VertexFinalGatherTraceInput& input, const glm::dvec3& origin, const Frame& frame,
+                int count, RandomStream& random, Scratch& s) {
     s.strata.resize(static_cast<std::size_t>(count));
     stratified_square(random, s.strata);
     s.rays.clear();
@@ -62,7 +62,7 @@ std::vector<double> face_sizes(const PatchMesh& patches) {
 
 // Whether a probe ray from origin meets a face (either side) at least kNearFacePatchSizes of vertex v's
 // patch size across, within kNearPatchSizes of it.
-bool near_a_surface(const DisplayMesh& display, const VertexFinalGatherInput& input,
+bool near_a_surface(const DisplayMesh& display, const VertexFinalGatherTraceInput& input,
                     std::span<const double> face_size, const glm::dvec3& origin, const Frame& frame,
                     std::size_t v, RandomStream& random, Scratch& s) {
     trace_rays(input, origin, frame, kNearProbeRays, random, s);
@@ -75,7 +75,7 @@ bool near_a_surface(const DisplayMesh& display, const VertexFinalGatherInput& in
 }
 
 // Vertex v's row: the patches its rays meet from the front, each with its share of the rays.
-void gather_row(const DisplayMesh& display, const VertexFinalGatherInput& input,
+void gather_row(const DisplayMesh& display, const VertexFinalGatherTraceInput& input,
                 std::span<const double> face_size, double offset, int count, std::size_t v, Scratch& s,
                 GatherRow& row) {
     const glm::dvec3 normal(display.normals[v]);
@@ -121,14 +121,12 @@ glm::dvec3 vertex_reflectance(const DisplayMesh& display, std::span<const glm::d
 
 }  // namespace
 
-void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput& input) {
+void trace_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherTraceInput& input) {
     const PatchMesh& patches = *input.patches;
-    const std::size_t n = patches.size();
-    if (input.emission.size() != n || input.reflectance.size() != n || input.source.size() != n ||
-        display.patch_count != n) {
-        throw std::invalid_argument("add_vertex_final_gather: the arrays do not have one entry per patch");
-    }
-    display.gather = {};
+    if (display.patch_count != patches.size())
+        throw std::invalid_argument("trace_vertex_final_gather: the display is not of these patches");
+    display.traced.gather = {};
+    display.light.gather = {};
     const std::size_t vertices = display.vertex_count();
     if (vertices == 0) return;
     const int most = input.near_surfaces_only ? kNearGatherRays : kFinalGatherRays;
@@ -156,13 +154,37 @@ void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput&
                           }
                           if (progress) progress->advance(range.size());
                       });
-    DisplayMesh::FinalGather& gather = display.gather;
-    append_rows(rows, gather);
-    gather.reflectance.resize(vertices);
-    for (std::size_t v = 0; v < vertices; ++v)
-        gather.reflectance[v] = vertex_reflectance(display, input.reflectance, v);
-    gather.emission.assign(input.emission.begin(), input.emission.end());
-    gather.source.assign(input.source.begin(), input.source.end());
+    append_rows(rows, display.traced.gather);
+}
+
+void light_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherArrays& arrays) {
+    const std::size_t n = display.patch_count;
+    if (arrays.emission.size() != n || arrays.reflectance.size() != n || arrays.source.size() != n)
+        throw std::invalid_argument("light_vertex_final_gather: the arrays do not have one entry per patch");
+    DisplayLight::Gather& gather = display.light.gather;
+    gather = {};
+    if (display.traced.gather.empty()) return;
+    gather.reflectance.resize(display.vertex_count());
+    for (std::size_t v = 0; v < display.vertex_count(); ++v)
+        gather.reflectance[v] = vertex_reflectance(display, arrays.reflectance, v);
+    gather.emission.assign(arrays.emission.begin(), arrays.emission.end());
+    gather.source.assign(arrays.source.begin(), arrays.source.end());
+}
+
+void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput& input) {
+    const std::size_t n = input.patches->size();
+    if (input.emission.size() != n || input.reflectance.size() != n || input.source.size() != n ||
+        display.patch_count != n) {
+        throw std::invalid_argument("add_vertex_final_gather: the arrays do not have one entry per patch");
+    }
+    trace_vertex_final_gather(display, {.patches = input.patches,
+                                        .rays = input.rays,
+                                        .seed = input.seed,
+                                        .ray_budget = input.ray_budget,
+                                        .near_surfaces_only = input.near_surfaces_only,
+                                        .progress = input.progress});
+    light_vertex_final_gather(
+        display, {.emission = input.emission, .reflectance = input.reflectance, .source = input.source});
 }
 
 }  // namespace rad

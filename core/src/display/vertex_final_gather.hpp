@@ -27,15 +27,9 @@ inline constexpr int kNearProbeRays = 64;
 inline constexpr double kNearPatchSizes = 2.0;
 inline constexpr double kNearFacePatchSizes = 1.0;
 
-struct VertexFinalGatherInput {
+struct VertexFinalGatherTraceInput {
     const PatchMesh* patches = nullptr;  // the patches the display mesh was built from
     const RayScene* rays = nullptr;      // over the same patches
-    // Per patch: what its radiosity starts from in the transport (E, plus ρ H_out under a sky or sun), its
-    // reflectance, and what the vertices' direct light already holds of its radiosity (its E where the
-    // display traces the emitters' light at the vertices, else 0).
-    std::span<const glm::dvec3> emission{};
-    std::span<const glm::dvec3> reflectance{};
-    std::span<const glm::dvec3> source{};
     std::uint64_t seed = 1;
     std::size_t ray_budget = kFinalGatherRayBudget;
     // Where patches hold their own light (uniform patches), their means are right and their reconstruction
@@ -50,14 +44,40 @@ struct VertexFinalGatherInput {
     Progress* progress = nullptr;  // advanced per vertex; its cancel throws Cancelled
 };
 
-// Fills display.gather: a final gather (the last bounce taken at each vertex instead of each patch). From
-// each untextured vertex, cosine-weighted rays over a stratified square; each front a ray meets counts its
-// share of the rays, so a vertex's irradiance is Σ share · B of the patches met. Where a patch's radiosity
-// is right but its light varies across it (a corner, the floor beside a block), the vertex shows the
-// variation the patch's mean hides; the solution's own error arrives there once reflected. Leaves it empty
-// where the budget leaves fewer than kFinalGatherMinRays per vertex (kNearGatherMinRays near surfaces only).
-// Call it after the direct light (which splits triangles). Throws std::invalid_argument when the arrays do
-// not have one entry per patch.
+// Fills display.traced.gather: a final gather's rows (the last bounce taken at each vertex instead of each
+// patch). From each untextured vertex, cosine-weighted rays over a stratified square; each front a ray meets
+// counts its share of the rays, so a vertex's irradiance is Σ share · B of the patches met. Where a patch's
+// radiosity is right but its light varies across it (a corner, the floor beside a block), the vertex shows
+// the variation the patch's mean hides; the solution's own error arrives there once reflected. Leaves it
+// empty where the budget leaves fewer than kFinalGatherMinRays per vertex (kNearGatherMinRays near surfaces
+// only). Call it after the direct light (which splits triangles). Clears display.light.gather.
+void trace_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherTraceInput& input);
+
+// What the rows are evaluated with, per patch: what its radiosity starts from in the transport (E, plus
+// ρ H_out under a sky or sun), its reflectance, and what the vertices' direct light already holds of its
+// radiosity (its E where the display traces the emitters' light at the vertices, else 0).
+struct VertexFinalGatherArrays {
+    std::span<const glm::dvec3> emission{};
+    std::span<const glm::dvec3> reflectance{};
+    std::span<const glm::dvec3> source{};
+};
+
+// Fills display.light.gather where rows are traced (each vertex's reflectance from its patches'); traces
+// nothing. Throws std::invalid_argument when the arrays do not have one entry per patch.
+void light_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherArrays& arrays);
+
+// trace_vertex_final_gather, then light_vertex_final_gather.
+struct VertexFinalGatherInput {
+    const PatchMesh* patches = nullptr;
+    const RayScene* rays = nullptr;
+    std::span<const glm::dvec3> emission{};
+    std::span<const glm::dvec3> reflectance{};
+    std::span<const glm::dvec3> source{};
+    std::uint64_t seed = 1;
+    std::size_t ray_budget = kFinalGatherRayBudget;
+    bool near_surfaces_only = false;
+    Progress* progress = nullptr;
+};
 void add_vertex_final_gather(DisplayMesh& display, const VertexFinalGatherInput& input);
 
 }  // namespace rad

@@ -29,7 +29,7 @@ std::span<const glm::dvec3> drawn_radiosity(const DisplayMesh& display, std::spa
 
 // direct_light_share over the display's own patches.
 double drawn_direct_light_share(const DisplayMesh& display, std::span<const glm::dvec3> radiosity) {
-    const DisplayMesh::DirectLight& direct = display.direct;
+    const DisplayLight::Direct& direct = display.light.direct;
     if (direct.vertex.empty() || radiosity.size() != direct.patch.size()) return 0.0;
     double held = 0.0, full = 0.0;
     for (std::size_t q = 0; q < radiosity.size(); ++q) {
@@ -40,19 +40,20 @@ double drawn_direct_light_share(const DisplayMesh& display, std::span<const glm:
 }
 
 // The display's patches' own last bounce over the solution's radiosity `gathered_from`
-// (DisplayMesh::PatchGather), with the share of the direct light the vertices do not add themselves.
+// (DisplayTraces::patch_gather), with the share of the direct light the vertices do not add themselves.
 std::vector<glm::dvec3> patch_gathered(const DisplayMesh& display, std::span<const glm::dvec3> gathered_from,
                                        double direct_share) {
-    const DisplayMesh::PatchGather& gather = display.patch_gather;
-    std::vector<glm::dvec3> out(gather.emission);
+    const GatherTable& rows = display.traced.patch_gather;
+    const DisplayLight::PatchGather& light = display.light.patch_gather;
+    std::vector<glm::dvec3> out(light.emission);
     for (std::size_t d = 0; d < out.size(); ++d) {
         glm::dvec3 sum(0.0);
-        for (std::uint32_t k = gather.row_begin[d]; k < gather.row_begin[d + 1]; ++k) {
-            const std::uint32_t q = gather.patch[k];
-            sum += static_cast<double>(gather.weight[k]) * (gathered_from[q] - gather.source[q]);
+        for (std::uint32_t k = rows.row_begin[d]; k < rows.row_begin[d + 1]; ++k) {
+            const std::uint32_t q = rows.patch[k];
+            sum += static_cast<double>(rows.weight[k]) * (gathered_from[q] - light.source[q]);
         }
-        out[d] += gather.reflectance[d] * sum;
-        if (direct_share > 0.0) out[d] += direct_share * display.direct.patch[d];
+        out[d] += light.reflectance[d] * sum;
+        if (direct_share > 0.0) out[d] += direct_share * display.light.direct.patch[d];
     }
     return out;
 }
@@ -75,14 +76,14 @@ glm::dvec3 reconstruct(const DisplayMesh& display, std::span<const glm::dvec3> v
 }
 
 // What vertex v's row gathers: ρ Σ weight (B − source).
-glm::dvec3 gathered(const DisplayMesh::FinalGather& gather, std::span<const glm::dvec3> radiosity,
-                    std::size_t v) {
+glm::dvec3 gathered(const GatherTable& rows, const DisplayLight::Gather& light,
+                    std::span<const glm::dvec3> radiosity, std::size_t v) {
     glm::dvec3 sum(0.0);
-    for (std::uint32_t k = gather.row_begin[v]; k < gather.row_begin[v + 1]; ++k) {
-        const std::uint32_t q = gather.patch[k];
-        sum += static_cast<double>(gather.weight[k]) * (radiosity[q] - gather.source[q]);
+    for (std::uint32_t k = rows.row_begin[v]; k < rows.row_begin[v + 1]; ++k) {
+        const std::uint32_t q = rows.patch[k];
+        sum += static_cast<double>(rows.weight[k]) * (radiosity[q] - light.source[q]);
     }
-    return gather.reflectance[v] * sum;
+    return light.reflectance[v] * sum;
 }
 
 // Every vertex's radiance from the display's patches: `radiosity` as they show it, `gathered_from` what the
@@ -94,30 +95,33 @@ void shown_radiance(const DisplayMesh& display, std::span<const glm::dvec3> radi
     if (share > 0.0) {
         indirect.resize(radiosity.size());
         for (std::size_t q = 0; q < indirect.size(); ++q)
-            indirect[q] = radiosity[q] - share * display.direct.patch[q];
+            indirect[q] = radiosity[q] - share * display.light.direct.patch[q];
         radiosity = indirect;
     }
     // A textured patch contributes the irradiance it receives, which the pixel multiplies by its albedo.
     std::vector<glm::dvec3> irradiance;
-    if (!display.patch_irradiance.empty()) {
+    if (!display.light.patch_irradiance.empty()) {
         irradiance.assign(radiosity.begin(), radiosity.end());
-        for (std::size_t q = 0; q < irradiance.size(); ++q) {
-            const DisplayMesh::PatchIrradiance& p = display.patch_irradiance[q];
-            if (p.textured) irradiance[q] = glm::max(irradiance[q] - p.emission, 0.0) * p.inverse_albedo;
+        for (std::uint32_t q = 0; q < irradiance.size(); ++q) {
+            const DisplayLight::PatchIrradiance& p = display.light.patch_irradiance[q];
+            if (display.textured_patch(q))
+                irradiance[q] = glm::max(irradiance[q] - p.emission, 0.0) * p.inverse_albedo;
         }
         radiosity = irradiance;
     }
-    const DisplayMesh::FinalGather& gather = display.gather;
-    const bool gathers = final_gather && !gather.empty();
+    const GatherTable& rows = display.traced.gather;
+    const DisplayLight::Gather& gather = display.light.gather;
+    const bool gathers = final_gather && !rows.empty() && !gather.reflectance.empty();
     for (std::size_t v = 0; v < display.vertex_count(); ++v) {
         if (display.weight_begin[v] == display.weight_begin[v + 1]) {
             radiance[v] = glm::vec3(0.0f);  // no patch: no light (and no range to keep within)
             continue;
         }
-        const bool row = gathers && gather.row_begin[v] != gather.row_begin[v + 1];
-        glm::dvec3 sum = row ? reconstruct(display, gather.emission, v) + gathered(gather, gathered_from, v)
-                             : reconstruct(display, radiosity, v);
-        if (share > 0.0) sum += share * glm::dvec3(display.direct.vertex[v]);
+        const bool row = gathers && rows.row_begin[v] != rows.row_begin[v + 1];
+        glm::dvec3 sum =
+            row ? reconstruct(display, gather.emission, v) + gathered(rows, gather, gathered_from, v)
+                : reconstruct(display, radiosity, v);
+        if (share > 0.0) sum += share * glm::dvec3(display.light.direct.vertex[v]);
         radiance[v] = glm::vec3(glm::max(sum, 0.0) / std::numbers::pi);
     }
 }
@@ -137,10 +141,10 @@ void solution_radiance(const DisplayMesh& display, std::span<const glm::dvec3> r
     const std::span<const glm::dvec3> drawn = drawn_radiosity(display, radiosity, restricted);
     const std::span<const glm::dvec3> drawn_from = drawn_radiosity(display, gathered_from, restricted_from);
     const double share =
-        display.direct.vertex.empty()
+        display.light.direct.vertex.empty()
             ? 0.0
             : std::clamp(direct_share.value_or(drawn_direct_light_share(display, drawn)), 0.0, 1.0);
-    if (final_gather && !display.patch_gather.empty()) {
+    if (final_gather && !display.light.patch_gather.emission.empty()) {
         const std::vector<glm::dvec3> patches = patch_gathered(display, gathered_from, share);
         shown_radiance(display, patches, drawn_from, share, final_gather, radiance);
         return;

@@ -34,12 +34,11 @@ void update_element_materials(Transport& transport, const PatchMesh& elements, c
     set_emission(transport, elements, scene);
 }
 
-void update_outside_light(Transport& transport, const PatchMesh& elements, const Scene& scene,
-                          std::uint64_t seed, Progress* progress) {
+void update_outside_light(Transport& transport, const PatchMesh& elements, const RayScene& element_rays,
+                          const Scene& scene, std::uint64_t seed, Progress* progress) {
     check_elements(transport, elements);
     if (has_outside_light(scene)) {
-        const RayScene rays(elements);
-        transport.outside = outside_irradiance(scene, elements, rays, seed, transport.area, progress);
+        transport.outside = outside_irradiance(scene, elements, element_rays, seed, transport.area, progress);
     } else {
         transport.outside.clear();
     }

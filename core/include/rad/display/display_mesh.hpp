@@ -40,7 +40,7 @@ enum class Reconstruction { average, linear };
 
 // automatic: near. A hierarchy's leaves hold the light of links made for a larger receiver; its display is
 //            drawn on patches of its own, which gather their last bounce first (DisplayPatches,
-//            add_display_patch_gather), and every vertex gathers where they cannot.
+//            trace_display_patch_gather), and every vertex gathers where they cannot.
 // near: only vertices beside another surface (VertexFinalGatherInput::near_surfaces_only), any transport.
 // on: every vertex. off: none.
 enum class FinalGather { automatic, near, on, off };
@@ -68,8 +68,68 @@ struct DisplayTexturing {
     std::span<const glm::dvec3> reflectance;
 };
 
+// What rays found on a display's geometry, whatever the light of the solution drawn on it: the same
+// elements and emitters drawn with another solution (other reflectances, another sky) need no ray
+// (relight_display).
+struct DisplayTraces {
+    // The emitters' direct irradiance H_d at each vertex, as traced (add_vertex_direct_light), the emitted
+    // radiosity E per display patch it was traced for, and per vertex 1 where it sees none of the emitters
+    // (its value is kept as traced); all empty where the display does not trace the emitters' light.
+    std::vector<glm::dvec3> direct_irradiance;
+    std::vector<glm::dvec3> direct_emitted;
+    std::vector<std::uint8_t> direct_umbra;
+    // Per vertex, the share of its rays that met each display patch's front (add_vertex_final_gather).
+    GatherTable gather;
+    // Per display patch of its own, the share of its rays that met each solution patch's front
+    // (trace_display_patch_gather).
+    GatherTable patch_gather;
+};
+
+// The light of one solution on a display (besides its radiosity, which vertex_radiance takes): what each
+// layer of DisplayTraces is evaluated with. Replaced whole when another solution of the same elements is
+// drawn (relight_display); the geometry and the traces stay.
+struct DisplayLight {
+    // How vertex_radiance turns a textured patch's radiosity into irradiance: (B − emission) ·
+    // inverse_albedo.
+    struct PatchIrradiance {
+        glm::dvec3 emission{0.0};
+        glm::dvec3 inverse_albedo{0.0};  // 1 / ρ per channel, 0 where ρ is 0
+    };
+    std::vector<PatchIrradiance> patch_irradiance;  // per patch where any is textured, else empty
+    // The emitters' direct light at the vertices, or all empty. A vertex shows its patches' reconstruction
+    // of B − s · patch, plus s · vertex, s being how much of the direct light the radiosity holds
+    // (direct_light_share).
+    struct Direct {
+        std::vector<glm::dvec3> patch;     // per patch ρ H_d: the direct light its radiosity holds
+        std::vector<glm::dvec3> emission;  // per patch E, and
+        std::vector<double> area;          // its area, for direct_light_share
+        std::vector<glm::vec3> vertex;     // per vertex ρ H_d at the vertex (H_d on textured surfaces)
+    };
+    Direct direct;
+    // The vertices' final gather (DisplayTraces::gather), or all empty. A vertex with a row shows the
+    // patches' reconstruction of `emission` alone, plus its direct light, plus its reflectance times
+    // Σ weight · (B − source) over its row's patches: the last bounce resolved at the vertex, not the patch.
+    // Vertices without a row (textured ones) show the reconstruction as before.
+    struct Gather {
+        std::vector<glm::dvec3> reflectance;  // per vertex
+        std::vector<glm::dvec3> emission;     // per patch, what the patch's radiosity starts from
+        std::vector<glm::dvec3> source;       // per patch, what the vertices' direct light already holds
+    };
+    Gather gather;
+    // The display's own patches' gather (DisplayTraces::patch_gather), or all empty. A display patch then
+    // shows emission + s · direct.patch + reflectance · Σ weight · (B − source) over the solution's patches
+    // its rays met (s as for the vertices), in place of the mean of the solution's patches under it.
+    struct PatchGather {
+        std::vector<glm::dvec3> emission;     // per display patch
+        std::vector<glm::dvec3> reflectance;  // per display patch
+        std::vector<glm::dvec3> source;       // per solution patch
+    };
+    PatchGather patch_gather;
+};
+
 // The geometry to draw, built once: a renderer uploads positions, normals and triangles once and, after
-// each solver step, only the colours vertex_radiance returns (one per vertex, in the same order).
+// each solver step, only the colours vertex_radiance returns (one per vertex, in the same order). Beside it,
+// what rays found on it (traced) and the light of the solution it draws (light), each replaced on its own.
 //
 // Textured surfaces keep their texel detail: their vertices carry H / π, the irradiance the patches around
 // them receive (from B = E + ρ H with each patch's own mean albedo ρ), and a pixel shows
@@ -83,13 +143,6 @@ struct DisplayMesh {
         std::shared_ptr<const Texture> texture;
         glm::vec3 albedo_scale{1.0f};  // a texel's linear colour times this is its albedo
         glm::vec3 emitted_radiance{0.0f};
-    };
-    // How vertex_radiance turns a textured patch's radiosity into irradiance: (B − emission) ·
-    // inverse_albedo.
-    struct PatchIrradiance {
-        bool textured = false;
-        glm::dvec3 emission{0.0};
-        glm::dvec3 inverse_albedo{0.0};  // 1 / ρ per channel, 0 where ρ is 0
     };
 
     std::vector<glm::vec3> positions;
@@ -105,45 +158,17 @@ struct DisplayMesh {
     std::vector<std::uint32_t> patch_surface;  // per patch, its surface
     // Where the display is drawn on patches of its own (DisplayPatches), how they take the solution's
     // radiosity: vertex_radiance and direct_light_share take one entry per solution patch and apply it
-    // first. Empty: the display's patches are the solution's.
+    // first, and each patch's exposed area (its area times its uncovered share). Empty: the display's
+    // patches are the solution's.
     PatchRestriction from_solution;
+    std::vector<double> own_patch_area;
     // Per vertex where any surface is textured (else empty); (0, 0) outside the textured ranges.
     std::vector<glm::vec2> texcoords;
-    std::vector<TexturedRange> textured;            // in triangle order, not overlapping
-    std::vector<PatchIrradiance> patch_irradiance;  // per patch where any is textured, else empty
-    // The emitters' direct light evaluated at each vertex (add_vertex_direct_light), or all empty. A vertex
-    // shows its patches' reconstruction of B − s · patch, plus s · vertex, s being how much of the direct
-    // light the radiosity holds (direct_light_share).
-    struct DirectLight {
-        std::vector<glm::dvec3> patch;     // per patch ρ H_d: the direct light its radiosity holds
-        std::vector<glm::dvec3> emission;  // per patch E, and
-        std::vector<double> area;          // its area, for direct_light_share
-        std::vector<glm::vec3> vertex;     // per vertex ρ H_d at the vertex (H_d on textured surfaces)
-    };
-    DirectLight direct;
-    // The light the rest of the scene reflects, gathered at each vertex by rays (add_vertex_final_gather),
-    // or all empty. A vertex with a row shows the patches' reconstruction of `emission` alone, plus its
-    // direct light, plus its reflectance times Σ weight · (B − source) over its row's patches: the last
-    // bounce resolved at the vertex, not the patch. Vertices without a row (textured ones) show the
-    // reconstruction as before.
-    // Its table has a row per vertex: the share of the vertex's rays that met each patch's front.
-    struct FinalGather : GatherTable {
-        std::vector<glm::dvec3> reflectance;  // per vertex
-        std::vector<glm::dvec3> emission;     // per patch, what the patch's radiosity starts from
-        std::vector<glm::dvec3> source;       // per patch, what the vertices' direct light already holds
-    };
-    FinalGather gather;
-    // Where the display is drawn on patches of its own, the last bounce of each of them gathered from the
-    // solution's patches by rays (add_display_patch_gather), or all empty. A display patch then shows
-    // emission + s · direct.patch + reflectance · Σ weight · (B − source) over the solution's patches its
-    // rays met (s as for the vertices), in place of the mean of the solution's patches under it.
-    // Its table has a row per display patch, over the solution's patches.
-    struct PatchGather : GatherTable {
-        std::vector<glm::dvec3> emission;     // per display patch
-        std::vector<glm::dvec3> reflectance;  // per display patch
-        std::vector<glm::dvec3> source;       // per solution patch
-    };
-    PatchGather patch_gather;
+    std::vector<TexturedRange> textured;       // in triangle order, not overlapping
+    std::vector<std::uint8_t> patch_textured;  // per patch where any is textured, else empty
+
+    DisplayTraces traced;
+    DisplayLight light;
 
     std::size_t vertex_count() const { return positions.size(); }
     // How many entries the radiosity given to vertex_radiance has.
@@ -151,9 +176,7 @@ struct DisplayMesh {
         return from_solution.empty() ? patch_count : from_solution.source_count;
     }
     // Whether patch q's vertices carry irradiance under a texture.
-    bool textured_patch(std::uint32_t q) const {
-        return !patch_irradiance.empty() && patch_irradiance[q].textured;
-    }
+    bool textured_patch(std::uint32_t q) const { return !patch_textured.empty() && patch_textured[q] != 0; }
 };
 
 // Throws std::invalid_argument for a crease angle outside [0°, 180°] or a reflectance of another size.

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "rad/mesh/patch_mesh.hpp"
+#include "rad/ray/ray_scene.hpp"
 #include "rad/scene/scene.hpp"
 #include "rad/solve/solver.hpp"
 #include "rad/transport/transport.hpp"
@@ -34,6 +35,9 @@ struct SceneTransport {
     std::unique_ptr<Transport> transport;
     const PatchMesh* patches = nullptr;  // the base, or refined_patches, or the hierarchy's leaves
     std::unique_ptr<const PatchMesh> refined_patches;
+    // A ray scene over the elements where building traced them (the sky's and sun's light), for whoever
+    // traces them next (the display, an edit of the sky); null otherwise.
+    std::shared_ptr<const RayScene> element_rays;
 };
 
 // The transport of the settings' method (its table entry's build), with the sky's and sun's light on its

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "rad/mesh/patch_mesh.hpp"
+#include "rad/ray/ray_scene.hpp"
 #include "rad/scene/scene.hpp"
 #include "rad/transport/transport.hpp"
 #include "rad/util/progress.hpp"
@@ -20,9 +21,9 @@ namespace rad {
 void update_element_materials(Transport& transport, const PatchMesh& elements, const Scene& scene);
 
 // The sky's and sun's light on each element measured again for the scene's sky and sun (cleared where it has
-// neither), as building the transport measures it, and each element's emission with it. Throws Cancelled
-// when `progress` is cancelled, leaving the transport as it was.
-void update_outside_light(Transport& transport, const PatchMesh& elements, const Scene& scene,
-                          std::uint64_t seed, Progress* progress = nullptr);
+// neither), as building the transport measures it, and each element's emission with it. `element_rays` are
+// over `elements`. Throws Cancelled when `progress` is cancelled, leaving the transport as it was.
+void update_outside_light(Transport& transport, const PatchMesh& elements, const RayScene& element_rays,
+                          const Scene& scene, std::uint64_t seed, Progress* progress = nullptr);
 
 }  // namespace rad
