@@ -132,8 +132,7 @@ int run_solve(const SolveCommandOptions& options) {
     const SolveStatistics stats = statistics(pipeline);
     const LoadedScene& loaded = pipeline.loaded();
     if (!options.json_path.empty()) {
-        write_solution_json(options.json_path, loaded.scene, pipeline.patches(), pipeline.transport(),
-                            pipeline.solver().solution(), stats);
+        write_solution_json(options.json_path, loaded.scene, pipeline.solution(), stats);
     }
     if (!options.save_path.empty()) write_saved_solution(options.save_path, pipeline.saved_solution());
 

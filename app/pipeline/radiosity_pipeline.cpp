@@ -137,6 +137,7 @@ const Solution& RadiosityPipeline::solution() const {
         solution_.reflectance = t.reflectance;
         solution_.emission = t.emission;
         solution_.direct = element_direct();
+        solution_.outside = t.outside;
         elements_current_ = true;
     }
     if (!radiosity_current_ && solver_) {

@@ -58,6 +58,7 @@ SavedSolution example() {
         solution.radiosity.push_back({x + 0.125, x + 0.25, x + 1.0 / 3.0});
         solution.shown_radiosity.push_back({x + 0.5, x + 0.75, x + 1e-300});
         solution.direct.push_back({x / 4.0, 0.0, x + 2.0});
+        solution.outside.push_back({x / 8.0, 0.375, x + 3.0});
     }
     saved.display_gather.row_begin = {0, 2, 2, 3};
     saved.display_gather.patch = {0, 5, static_cast<std::uint32_t>(solution.size() - 1)};
@@ -156,20 +157,24 @@ TEST(SavedSolution, RoundTripsEveryField) {
     EXPECT_EQ(yb.radiosity, ya.radiosity);
     EXPECT_EQ(yb.shown_radiosity, ya.shown_radiosity);
     EXPECT_EQ(yb.direct, ya.direct);
+    EXPECT_EQ(yb.outside, ya.outside);
+    EXPECT_FALSE(yb.outside.empty());
     EXPECT_EQ(yb.report.steps, 42u);
     EXPECT_EQ(yb.report.residual, 3.5e-6);
     EXPECT_EQ(yb.report.status, "iteration limit");
     EXPECT_EQ(yb.report.status_message, "stopped at the step limit of 42");
 }
 
-TEST(SavedSolution, ASceneWithoutCameraOrOutlinesRoundTrips) {
+TEST(SavedSolution, ASceneWithoutCameraOutlinesOrOutsideLightRoundTrips) {
     SavedSolution a = with_elements(example(), [](PatchMesh& m) {
         m.outline_begin.clear();
         m.outline.clear();
     });
     a.scene.camera.reset();
+    a.solution.outside.clear();  // no sky or sun
     const SavedSolution b = decode_saved_solution(encode_saved_solution(a), "x.radiosity");
     EXPECT_FALSE(b.scene.camera.has_value());
+    EXPECT_TRUE(b.solution.outside.empty());
     EXPECT_TRUE(b.solution.elements->outline_begin.empty());
     EXPECT_EQ(b.solution.radiosity, a.solution.radiosity);
 }

@@ -456,7 +456,7 @@ std::string encode_saved_solution(const SavedSolution& saved) {
     const std::size_t n = solution.size();
     if (solution.area.size() != n || solution.reflectance.size() != n || solution.emission.size() != n ||
         solution.radiosity.size() != n || solution.shown_radiosity.size() != n ||
-        solution.direct.size() != n) {
+        solution.direct.size() != n || (!solution.outside.empty() && solution.outside.size() != n)) {
         throw std::invalid_argument("saved solution: per-element arrays differ from the patch count");
     }
     const GatherTable& gather = saved.display_gather;
@@ -473,6 +473,8 @@ std::string encode_saved_solution(const SavedSolution& saved) {
     for (const auto* values : {&solution.reflectance, &solution.emission, &solution.radiosity,
                                &solution.shown_radiosity, &solution.direct})
         for (const glm::dvec3& v : *values) w.vec(v);
+    w.u8(solution.outside.empty() ? 0 : 1);
+    for (const glm::dvec3& v : solution.outside) w.vec(v);
     const GatherTable& g = saved.display_gather;
     w.indices(g.row_begin);
     w.indices(g.patch);
@@ -548,6 +550,15 @@ SavedSolution decode_saved_solution(std::string_view bytes, const std::string& n
             if (solution.direct[i][c] < 0.0)
                 r.fail("element " + std::to_string(i) + ": negative direct light");
         }
+    }
+    const std::uint8_t has_outside = r.u8("outside flag");
+    if (has_outside > 1) r.fail("the outside flag is neither 0 nor 1");
+    if (has_outside == 1) {
+        values(solution.outside, "element outside irradiance");
+        for (std::size_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c)
+                if (solution.outside[i][c] < 0.0)
+                    r.fail("element " + std::to_string(i) + ": negative outside irradiance");
     }
     saved.display_gather = read_display_gather(r, n);
     SolutionReport& report = solution.report;

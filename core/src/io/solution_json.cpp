@@ -24,28 +24,28 @@ json triple(const glm::dvec3& v) {
     return json::array({v.x, v.y, v.z});
 }
 
-glm::dvec3 outside_irradiance(const Transport& transport, std::size_t i) {
-    return transport.outside.empty() ? glm::dvec3(0.0) : transport.outside[i];
+glm::dvec3 outside_irradiance(const Solution& solution, std::size_t i) {
+    return solution.outside.empty() ? glm::dvec3(0.0) : solution.outside[i];
 }
 
-json patch_json(const Scene& scene, const PatchMesh& patches, const Transport& transport,
-                std::span<const glm::dvec3> radiosity, std::size_t i) {
-    const Patch& patch = patches.patches[i];
+json patch_json(const Scene& scene, const Solution& solution, std::size_t i) {
+    const Patch& patch = solution.elements->patches[i];
+    const glm::dvec3& radiosity = solution.radiosity[i];
     const Surface& surface = scene.surfaces.at(patch.surface);
     return json{{"surface", surface.name},
                 {"surface_index", patch.surface},
                 {"material", surface.material.name},
                 {"area", patch.area},
                 // The share other geometry does not cover; radiosity is that of this exposed part.
-                {"exposed", transport.area[i] / patch.area},
+                {"exposed", solution.area[i] / patch.area},
                 {"centroid", triple(patch.centroid)},
                 {"normal", triple(patch.normal)},
-                {"reflectance", triple(transport.reflectance[i])},
+                {"reflectance", triple(solution.reflectance[i])},
                 {"emission", triple(surface.material.emitted_radiosity())},
                 // The irradiance from the sky and sun (0 without them).
-                {"outside_irradiance", triple(outside_irradiance(transport, i))},
-                {"radiosity", triple(radiosity[i])},
-                {"radiance", triple(radiosity[i] / std::numbers::pi)}};
+                {"outside_irradiance", triple(outside_irradiance(solution, i))},
+                {"radiosity", triple(radiosity)},
+                {"radiance", triple(radiosity / std::numbers::pi)}};
 }
 
 json transport_json(const TransportReport& t) {
@@ -66,9 +66,9 @@ json transport_json(const TransportReport& t) {
     return out;
 }
 
-json stats_json(const Transport& transport, const SolveStatistics& stats) {
+json stats_json(const Solution& solution, const SolveStatistics& stats) {
     return json{
-        {"patches", transport.size()},
+        {"patches", solution.size()},
         {"nonzeros", stats.transport.interactions},
         {"iterations", stats.iterations},
         {"residual", stats.residual},
@@ -94,24 +94,21 @@ json stats_json(const Transport& transport, const SolveStatistics& stats) {
 
 }  // namespace
 
-void write_solution_json(const std::string& path, const Scene& scene, const PatchMesh& patches,
-                         const Transport& transport, std::span<const glm::dvec3> radiosity,
+void write_solution_json(const std::string& path, const Scene& scene, const Solution& solution,
                          const SolveStatistics& stats) {
-    if (patches.size() != transport.size() || radiosity.size() != transport.size()) {
-        throw std::invalid_argument("solution JSON: patches, transport and radiosity differ in size");
-    }
+    check_solution_fits(scene, solution);
     if (!std::isfinite(stats.residual))
         throw std::invalid_argument("solution JSON: the residual is not finite");
-    const std::string stats_text = stats_json(transport, stats).dump();
+    const std::string stats_text = stats_json(solution, stats).dump();
     // Streamed a patch at a time: a document of a million patches built in memory first would cost more
     // than the solve's own peak.
     replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         if (!out) throw std::runtime_error("cannot create " + temporary.string());
         out << "{\"patches\":[";
-        for (std::size_t i = 0; i < patches.size(); ++i) {
+        for (std::size_t i = 0; i < solution.size(); ++i) {
             if (i > 0) out << ',';
-            out << patch_json(scene, patches, transport, radiosity, i).dump();
+            out << patch_json(scene, solution, i).dump();
         }
         out << "],\"stats\":" << stats_text << "}\n";
         out.flush();

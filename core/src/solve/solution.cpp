@@ -47,6 +47,7 @@ void check_solution_fits(const Scene& scene, const Solution& solution) {
     check_size(solution.direct.size(), n, "direct lights");
     check_size(solution.radiosity.size(), n, "radiosities");
     check_size(solution.shown_radiosity.size(), n, "shown radiosities");
+    if (!solution.outside.empty()) check_size(solution.outside.size(), n, "outside irradiances");
     for (std::size_t e = 0; e < n; ++e) {
         const Patch& patch = solution.elements->patches[e];
         if (patch.surface >= scene.surfaces.size() ||

@@ -27,7 +27,7 @@ struct SavedSolution {
 //   24 u64 checksum: 64-bit FNV-1a of the payload
 // The payload's layout is in docs/architecture.md ("Saved solutions") and saved_solution.cpp.
 inline constexpr std::string_view kSavedSolutionMagic{"\x89RADSOL\n", 8};
-inline constexpr std::uint32_t kSavedSolutionVersion = 5;
+inline constexpr std::uint32_t kSavedSolutionVersion = 6;
 inline constexpr std::size_t kSavedSolutionHeaderBytes = 32;
 
 // Whether a scene argument names a saved solution rather than a scene: it ends in .radiosity (any case).

@@ -7,6 +7,7 @@
 
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/scene/scene.hpp"
+#include "rad/solve/solution.hpp"
 #include "rad/transport/transport.hpp"
 
 namespace rad {
@@ -38,8 +39,8 @@ struct SolveStatistics {
 // temporary file in the same folder, renamed into place when complete, so no partial file is ever left
 // behind. Throws std::runtime_error when the file cannot be written and std::invalid_argument for a
 // non-finite value (JSON has none).
-void write_solution_json(const std::string& path, const Scene& scene, const PatchMesh& patches,
-                         const Transport& transport, std::span<const glm::dvec3> radiosity,
+// The patches are the solution's elements, with their radiosity B (Solution::radiosity).
+void write_solution_json(const std::string& path, const Scene& scene, const Solution& solution,
                          const SolveStatistics& stats);
 
 }  // namespace rad

@@ -45,13 +45,15 @@ struct SolutionReport {
 // What a solve produces and a saved file holds, whichever it came from: the elements the solution is indexed
 // by (as patches: each names its surface and face), per element its exposed area A, reflectance ρ, what its
 // radiosity starts from (E, plus ρ H_out under a sky or sun), ρ H_d (the emitters' light reflected once), the
-// radiosity B and what is shown of it, the settings and the solver's report. The elements are shared: a
+// irradiance H_out from the sky and sun (empty without them), the radiosity B and what is shown of it, the
+// settings and the solver's report. The elements are shared: a
 // solution copied for a file or a display does not copy the mesh.
 struct Solution {
     SolutionSettings settings;
     std::shared_ptr<const PatchMesh> elements;
     std::vector<double> area;
     std::vector<glm::dvec3> reflectance, emission, direct;
+    std::vector<glm::dvec3> outside;          // H_out per element, or empty: no sky or sun
     std::vector<glm::dvec3> radiosity;        // B (Solver::solution)
     std::vector<glm::dvec3> shown_radiosity;  // what is shown (Solver::display_solution)
     SolutionReport report;
@@ -60,7 +62,8 @@ struct Solution {
 };
 
 // Throws std::invalid_argument, naming what differs, when `solution` cannot be a solution of `scene`: no
-// elements, a per-element array of another size, or an element on a surface or face the scene does not have.
+// elements, a per-element array of another size (outside: empty or one per element), or an element on a
+// surface or face the scene does not have.
 void check_solution_fits(const Scene& scene, const Solution& solution);
 
 }  // namespace rad
