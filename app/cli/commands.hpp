@@ -12,6 +12,7 @@ using CommandRunner = std::function<int()>;
 CommandRunner add_info_command(CLI::App& app);
 CommandRunner add_solve_command(CLI::App& app);
 CommandRunner add_render_command(CLI::App& app);
+CommandRunner add_measure_command(CLI::App& app);
 CommandRunner add_bench_command(CLI::App& app);
 CommandRunner add_view_command(CLI::App& app);  // also the default when no command is named
 

@@ -124,6 +124,11 @@ class RadiosityPipeline {
     const SolverOptions& solver_options() const { return solver_options_; }
     SolverMethod method() const { return method_; }
 
+    // One ray scene over the solution's elements (has_solution()), for everything that traces them after the
+    // transport is built (the display, an edit of the sky, sensors): the one the transport's build made where
+    // it made one.
+    const RayScene& element_rays() const;
+
     // Emitted, absorbed and escaped power of the solution as it stands (after prepare).
     EnergyBalance energy_balance() const;
 
@@ -142,9 +147,6 @@ class RadiosityPipeline {
     SolutionSettings solution_settings() const;
     // The solution's elements from the transport just built or edited.
     void take_elements();
-    // One ray scene over the solution's elements, for everything that traces them after the transport is
-    // built (the display, an edit of the sky): the one the transport's build made where it made one.
-    const RayScene& element_rays() const;
     // ρ H_d per element: the emitters' light reflected once, by the transport (after prepare).
     std::vector<glm::dvec3> element_direct() const;
     // Opened from a file: the rebuilt elements must be the file's, and the solver starts from its radiosity.

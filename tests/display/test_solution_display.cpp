@@ -19,17 +19,8 @@ namespace {
 
 // The Cornell box solved by uniform transport, as a Solution.
 Solution cornell_solution(const test::SolvedScene& solved) {
-    const Transport& t = *solved.system.transport;
-    Solution solution;
-    solution.settings.patch_size = 100.0;
-    solution.settings.subdivision = "uniform";
-    solution.elements = std::make_shared<const PatchMesh>(*solved.system.patches);
-    solution.area = t.area;
-    solution.reflectance = t.reflectance;
-    solution.emission = t.emission;
+    Solution solution = test::solution_of(solved, 100.0);
     solution.direct.assign(solution.size(), glm::dvec3(0.0));
-    solution.radiosity = solved.radiosity;
-    solution.shown_radiosity = solved.radiosity;
     return solution;
 }
 
@@ -50,27 +41,6 @@ TEST(SolutionDisplay, DrawsASolutionOfItsScene) {
     EXPECT_FALSE(display.light.direct.vertex.empty());  // smooth mode traced the lamp's light at the vertices
 }
 
-// The Cornell box solved by `method` on base patches of `base` (its elements and the arrays a solve makes),
-// with ρ H_d from the transport's gather of the emission.
-Solution solved_cornell(const test::SolvedScene& solved, const TransportMethod& method, double base) {
-    const Transport& t = *solved.system.transport;
-    Solution solution;
-    solution.settings.patch_size = base;
-    solution.settings.subdivision = std::string(method.name);
-    solution.settings.seed = 7;
-    solution.elements = std::make_shared<const PatchMesh>(*solved.system.patches);
-    solution.area = t.area;
-    solution.reflectance = t.reflectance;
-    solution.emission = t.emission;
-    std::vector<glm::dvec3> gathered(solution.size());
-    t.gather(t.emission, gathered);
-    solution.direct.resize(solution.size());
-    for (std::size_t q = 0; q < solution.size(); ++q) solution.direct[q] = t.reflectance[q] * gathered[q];
-    solution.radiosity = solved.radiosity;
-    solution.shown_radiosity = solved.radiosity;
-    return solution;
-}
-
 // The same elements with other reflectances and another radiosity (what an edit of the materials' colours
 // or of the sky gives): the traces still hold.
 Solution recoloured(Solution solution) {
@@ -88,7 +58,7 @@ TEST(SolutionDisplay, AnotherSolutionOfTheSameElementsReplacesOnlyTheLight) {
         SCOPED_TRACE(std::string(method.name));
         const double base = 100.0 * method.base_patch_scale;
         const auto solved = test::solve_scene(make_cornell_box(), method.id, base);
-        const Solution first = solved_cornell(*solved, method, base);
+        const Solution first = test::solution_of(*solved, base, 7);
         const Solution second = recoloured(first);
         DisplayMesh display = build_solution_display(solved->scene, first, {});
         ASSERT_FALSE(display.light.direct.vertex.empty());
@@ -113,7 +83,7 @@ TEST(SolutionDisplay, AnotherSolutionOfTheSameElementsReplacesOnlyTheLight) {
 TEST(SolutionDisplay, RefusesToRelightWhenTheEmittersChanged) {
     const TransportMethod& method = transport_method(Subdivision::uniform);
     const auto solved = test::solve_scene(make_cornell_box(), method.id, 100.0);
-    const Solution solution = solved_cornell(*solved, method, 100.0);
+    const Solution solution = test::solution_of(*solved, 100.0, 7);
     DisplayMesh display = build_solution_display(solved->scene, solution, {});
     Scene brighter = solved->scene;
     for (Surface& surface : brighter.surfaces)
@@ -122,7 +92,7 @@ TEST(SolutionDisplay, RefusesToRelightWhenTheEmittersChanged) {
     EXPECT_THROW(relight_display(display, brighter, solution), std::invalid_argument);
     // A solution of other elements (a finer mesh) does not fit either.
     const auto finer = test::solve_scene(make_cornell_box(), method.id, 50.0);
-    EXPECT_FALSE(display_traces_fit(display, finer->scene, solved_cornell(*finer, method, 50.0)));
+    EXPECT_FALSE(display_traces_fit(display, finer->scene, test::solution_of(*finer, 50.0, 7)));
 }
 
 TEST(SolutionDisplay, RefusesASolutionOfAnotherScene) {
