@@ -62,13 +62,7 @@ int run_measure(const MeasureOptions& options, const CLI::App& command) {
     const std::string& scene = options.pipeline.scene.scene;
     const bool saved = is_saved_solution_path(scene);
     if (saved) refuse_solving_options(command, scene);
-    if (!options.out.empty()) {
-        try {
-            require_output_folder("out", options.out);
-        } catch (const SettingError& e) {
-            throw InputError(e.worded([](std::string_view) { return std::string("--out"); }));
-        }
-    }
+    if (!options.out.empty()) require_output_folder("csv_path", options.out);
     const std::vector<Sensor> sensors = read_sensors_file(options.points);
     std::unique_ptr<RadiosityPipeline> pipeline =
         saved ? std::make_unique<RadiosityPipeline>(read_saved_solution(scene), scene)

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <glm/geometric.hpp>
 #include <iostream>
 #include <map>
@@ -17,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/export_option.hpp"
 #include "cli/gl_platform_option.hpp"
+#include "cli/list_file.hpp"
 #include "cli/number_checks.hpp"
 #include "cli/solving_options.hpp"
 #include "gl/headless_context.hpp"
@@ -66,30 +66,15 @@ constexpr int kMaxPathsPerPixel = 1 << 20;
 
 // One camera per line; blank lines and # comments are skipped. Errors name the file and line.
 std::vector<Camera> read_cameras_file(const std::string& path, const Camera& fallback) {
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (error || !std::filesystem::exists(status)) throw InputError(path + ": no such file (--cameras)");
-    if (!std::filesystem::is_regular_file(status))
-        throw InputError(path + ": not a regular file (--cameras)");
-    if (std::filesystem::file_size(path, error) > kMaxCamerasFileBytes || error) {
-        throw InputError(path + ": larger than 1 MiB; a cameras file holds one camera per line");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot be read (--cameras)");
     std::vector<Camera> cameras;
-    std::string line;
-    for (std::size_t number = 1; std::getline(in, line); ++number) {
-        if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos) continue;
-        const auto last = line.find_last_not_of(" \t\r");
-        const std::string where = path + ":" + std::to_string(number);
-        if (cameras.size() == kMaxCameras) {
-            throw InputError(where + ": more than " + std::to_string(kMaxCameras) + " cameras");
-        }
-        cameras.push_back(parse_camera(line.substr(first, last - first + 1), fallback, where));
-    }
-    if (in.bad()) throw InputError(path + ": cannot be read (--cameras)");
+    read_list_file(
+        path, "--cameras", kMaxCamerasFileBytes, "1 MiB", "a cameras file holds one camera per line",
+        [&](std::string_view line, const std::string& where) {
+            if (cameras.size() == kMaxCameras) {
+                throw InputError(where + ": more than " + std::to_string(kMaxCameras) + " cameras");
+            }
+            cameras.push_back(parse_camera(std::string(line), fallback, where));
+        });
     if (cameras.empty()) throw InputError(path + ": no cameras (one ex,ey,ez,tx,ty,tz[,ux,uy,uz] per line)");
     return cameras;
 }

@@ -2,11 +2,10 @@
 
 #include <charconv>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <glm/geometric.hpp>
 #include <string_view>
 
+#include "cli/list_file.hpp"
 #include "rad/util/error.hpp"
 
 namespace rad {
@@ -45,22 +44,12 @@ Sensor parse_sensor(std::string_view line, const std::string& where) {
 }  // namespace
 
 std::vector<Sensor> read_sensors_file(const std::string& path) {
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (error || !std::filesystem::exists(status)) throw InputError(path + ": no such file (--points)");
-    if (!std::filesystem::is_regular_file(status)) throw InputError(path + ": not a regular file (--points)");
-    if (std::filesystem::file_size(path, error) > kMaxSensorsFileBytes || error)
-        throw InputError(path + ": larger than 256 MiB; a points file holds one sensor per line");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot be read (--points)");
     std::vector<Sensor> sensors;
-    std::string line;
-    for (std::size_t number = 1; std::getline(in, line); ++number) {
-        if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        sensors.push_back(parse_sensor(line, path + ":" + std::to_string(number)));
-    }
-    if (in.bad()) throw InputError(path + ": cannot be read (--points)");
+    read_list_file(path, "--points", kMaxSensorsFileBytes, "256 MiB",
+                   "a points file holds one sensor per line",
+                   [&](std::string_view line, const std::string& where) {
+                       sensors.push_back(parse_sensor(line, where));
+                   });
     if (sensors.empty()) throw InputError(path + ": no sensors (one x y z dx dy dz per line)");
     return sensors;
 }

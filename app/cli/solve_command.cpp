@@ -111,12 +111,7 @@ int run_solve(const SolveCommandOptions& options) {
         if (!is_saved_solution_path(options.save_path)) {
             throw InputError("--save " + options.save_path + ": the name must end in .radiosity");
         }
-        try {
-            require_output_folder("save_path", options.save_path);
-        } catch (const SettingError& e) {
-            // The program's table of flags (input_error_message.cpp) does not know this one.
-            throw InputError(e.worded([](std::string_view) { return std::string("--save"); }));
-        }
+        require_output_folder("save_path", options.save_path);
     }
     check_export_paths(options.exports);
     if (is_saved_solution_path(options.pipeline.scene.scene)) {

@@ -8,7 +8,7 @@
 namespace rad {
 
 std::string flag_of(std::string_view setting) {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 15> flags = {{
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 17> flags = {{
         {"patch_size", "--patch-size"},
         {"solver", "--solver"},
         {"tolerance", "--tol"},
@@ -23,6 +23,8 @@ std::string flag_of(std::string_view setting) {
         {"seed", "--seed"},
         {"image_path", "--out"},
         {"json_path", "--json"},
+        {"save_path", "--save"},
+        {"csv_path", "--out"},
         {"export_path", "--export"},
     }};
     for (const auto& [name, flag] : flags)

@@ -95,6 +95,11 @@ TEST(MeasureCommand, RefusesBadPointsFilesNamingTheLineAndWritesNothing) {
         EXPECT_NE(result.err.find(points + words), std::string::npos) << result.err;
         EXPECT_FALSE(std::filesystem::exists(out));
     }
+    const std::string points = dir.write("points.txt", "1 2 3 0 1 0\n");
+    const auto no_folder =
+        run_radiosity({"measure", "--points", points, "--out", (dir.path() / "none" / "lux.csv").string()});
+    EXPECT_EQ(no_folder.status, 2);
+    EXPECT_NE(no_folder.err.find("--out"), std::string::npos) << no_folder.err;
     const auto missing = run_radiosity({"measure", "--points", (dir.path() / "none.txt").string()});
     EXPECT_EQ(missing.status, 2);
     EXPECT_NE(missing.err.find("no such file"), std::string::npos);

@@ -71,57 +71,61 @@ DrawnArrays drawn_arrays(const DisplayMesh& display, const Solution& solution) {
             r.apply(solution.direct)};
 }
 
-// The solution drawn on patches of the display's own: the patches, how they take the solution's values, and
-// the rays over the solution's elements that found that.
-struct OwnPatches {
-    DisplayPatches patches;
-    const RayScene* element_rays = nullptr;
+// A ray scene over the solution's elements: the one given, or one built the first time it is asked for.
+class ElementRays {
+  public:
+    ElementRays(const PatchMesh& elements, const RayScene* given) : elements_(elements), given_(given) {}
+    const RayScene& get() {
+        if (given_) return *given_;
+        if (!built_) built_.emplace(elements_);
+        return *built_;
+    }
+
+  private:
+    const PatchMesh& elements_;
+    const RayScene* given_;
+    std::optional<RayScene> built_;
 };
 
-std::optional<OwnPatches> own_patches(const Scene& scene, const Solution& solution, const RayScene& rays) {
+std::optional<DisplayPatches> own_patches(const Scene& scene, const Solution& solution, ElementRays& rays) {
     const double patch_size = display_patch_size(solution.settings);
     if (!(patch_size > 0.0)) return std::nullopt;
-    return OwnPatches{
-        make_display_patches(scene, *solution.elements, rays, exposed_shares(solution), patch_size), &rays};
+    return make_display_patches(scene, *solution.elements, rays.get(), exposed_shares(solution), patch_size);
 }
 
-void trace_patch_gather(DisplayMesh& display, const Solution& solution, const OwnPatches& own,
-                        const GatherTable* traced, Progress* progress) {
-    trace_display_patch_gather(display, {.patches = &own.patches.mesh,
-                                         .exposed = own.patches.exposed,
+void trace_patch_gather(DisplayMesh& display, const Solution& solution, const DisplayPatches& own,
+                        ElementRays& rays, const GatherTable* traced, Progress* progress) {
+    trace_display_patch_gather(display, {.patches = &own.mesh,
+                                         .exposed = own.exposed,
                                          .solution = solution.elements.get(),
-                                         .solution_rays = own.element_rays,
+                                         .solution_rays = &rays.get(),
                                          .seed = solution.settings.seed,
                                          .progress = progress,
                                          .traced = traced});
 }
 
-// The geometry and what rays find on it: the mesh of the drawn patches, the emitters' direct light at its
-// vertices (which splits triangles along shadow edges), then the gathers, which trace the vertices it made.
+// What rays find on the drawn patches: the emitters' direct light at the vertices (which splits triangles
+// along shadow edges), then the gathers, which trace the vertices it made.
 void trace_display(DisplayMesh& display, const Scene& scene, const Solution& solution,
-                   const DisplayOptions& options, const PatchMesh& drawn,
-                   const std::optional<OwnPatches>& own, const RayScene& element_rays,
-                   const GatherTable* traced_patch_gather, Progress* progress) {
+                   const DisplayOptions& options, const PatchMesh& drawn, const DisplayPatches* own,
+                   ElementRays& element_rays, const GatherTable* traced_patch_gather, Progress* progress) {
     FinalGather gather =
         options.final_gather == FinalGather::automatic ? FinalGather::near : options.final_gather;
     const std::uint64_t seed = solution.settings.seed;
     const std::vector<glm::dvec3> emitted = emitted_on_display(scene, display);
+    // Kept wherever the display would trace the emitters, so an edit that makes a surface emit is seen.
+    if (options.direct_light_at_vertices) display.traced.direct_emitted = emitted;
     const bool direct = options.direct_light_at_vertices && draws_vertex_direct_light(drawn, emitted);
-    if (!direct && gather == FinalGather::off) {
-        if (options.direct_light_at_vertices) display.traced.direct_emitted = emitted;
-        return;
-    }
+    if (!direct && gather == FinalGather::off) return;
     std::optional<RayScene> own_rays;
     if (own) own_rays.emplace(drawn);
-    const RayScene& rays = own ? *own_rays : element_rays;
+    const RayScene& rays = own ? *own_rays : element_rays.get();
     if (direct)
         trace_vertex_direct_light(display,
                                   {.patches = &drawn, .rays = &rays, .emitted = emitted, .seed = seed});
-    else if (options.direct_light_at_vertices)
-        display.traced.direct_emitted = emitted;
     if (gather == FinalGather::off) return;
     if (own) {
-        trace_patch_gather(display, solution, *own, traced_patch_gather, progress);
+        trace_patch_gather(display, solution, *own, element_rays, traced_patch_gather, progress);
         // Without the patches' own gather (past its ray budget) their means are the elements', which hold
         // light linked to larger elements: every vertex gathers instead.
         if (display.traced.patch_gather.empty() && options.final_gather == FinalGather::automatic)
@@ -134,52 +138,8 @@ void trace_display(DisplayMesh& display, const Scene& scene, const Solution& sol
                                         .progress = progress});
 }
 
-}  // namespace
-
-DisplayMesh build_solution_display(const Scene& scene, const Solution& solution,
-                                   const DisplayOptions& options, const GatherTable* traced_patch_gather,
-                                   Progress* progress, const RayScene* element_rays) {
-    check_solution_fits(scene, solution);
-    const bool smooth = options.mode == ColourMode::smooth;
-    std::optional<RayScene> built_rays;
-    const auto rays = [&]() -> const RayScene& {
-        if (element_rays) return *element_rays;
-        if (!built_rays) built_rays.emplace(*solution.elements);
-        return *built_rays;
-    };
-    std::optional<OwnPatches> own;
-    if (smooth) own = own_patches(scene, solution, rays());
-    const PatchMesh& drawn = own ? own->patches.mesh : *solution.elements;
-    const std::vector<glm::dvec3> drawn_reflectance =
-        own ? own->patches.from_solution.apply(solution.reflectance) : solution.reflectance;
-    DisplayMesh display = build_display_mesh(drawn, options, {&scene, drawn_reflectance});
-    if (own) {
-        display.from_solution = std::move(own->patches.from_solution);
-        display.own_patch_area.resize(drawn.size());
-        for (std::size_t d = 0; d < drawn.size(); ++d)
-            display.own_patch_area[d] = own->patches.exposed[d] * drawn.patches[d].area;
-    }
-    if (smooth) {
-        // The drawn patches' rays are needed only where something is traced.
-        const bool traces = options.direct_light_at_vertices || options.final_gather != FinalGather::off;
-        if (traces)
-            trace_display(display, scene, solution, options, drawn, own, rays(), traced_patch_gather,
-                          progress);
-    }
-    relight_display(display, scene, solution);
-    return display;
-}
-
-bool display_traces_fit(const DisplayMesh& display, const Scene& scene, const Solution& solution) {
-    if (display.solution_patch_count() != solution.elements->size()) return false;
-    if (display.traced.direct_emitted.empty()) return true;
-    return display.traced.direct_emitted == emitted_on_display(scene, display);
-}
-
-void relight_display(DisplayMesh& display, const Scene& scene, const Solution& solution) {
-    check_solution_fits(scene, solution);
-    if (!display_traces_fit(display, scene, solution))
-        throw std::invalid_argument("relight_display: the display was traced for other elements or emitters");
+// relight_display once the solution is known to fit the scene and the display's traces.
+void light_display(DisplayMesh& display, const Scene& scene, const Solution& solution) {
     const DrawnArrays drawn = drawn_arrays(display, solution);
     light_textured_patches(display, scene, drawn.reflectance);
     // On the display's own patches each vertex keeps its exact value: the patches' means of the direct light
@@ -204,14 +164,53 @@ void relight_display(DisplayMesh& display, const Scene& scene, const Solution& s
                   .source = gathered_source(emitted_on_display(scene, display), vertices_hold_direct)});
 }
 
+}  // namespace
+
+DisplayMesh build_solution_display(const Scene& scene, const Solution& solution,
+                                   const DisplayOptions& options, const GatherTable* traced_patch_gather,
+                                   Progress* progress, const RayScene* element_rays) {
+    check_solution_fits(scene, solution);
+    const bool smooth = options.mode == ColourMode::smooth;
+    ElementRays rays(*solution.elements, element_rays);
+    std::optional<DisplayPatches> own = smooth ? own_patches(scene, solution, rays) : std::nullopt;
+    const PatchMesh& drawn = own ? own->mesh : *solution.elements;
+    const std::vector<glm::dvec3> drawn_reflectance =
+        own ? own->from_solution.apply(solution.reflectance) : solution.reflectance;
+    DisplayMesh display = build_display_mesh(drawn, options, {&scene, drawn_reflectance});
+    if (own) {
+        display.from_solution = std::move(own->from_solution);
+        display.own_patch_area.resize(drawn.size());
+        for (std::size_t d = 0; d < drawn.size(); ++d)
+            display.own_patch_area[d] = own->exposed[d] * drawn.patches[d].area;
+    }
+    if (smooth)
+        trace_display(display, scene, solution, options, drawn, own ? &*own : nullptr, rays,
+                      traced_patch_gather, progress);
+    light_display(display, scene, solution);
+    return display;
+}
+
+bool display_traces_fit(const DisplayMesh& display, const Scene& scene, const Solution& solution) {
+    if (display.solution_patch_count() != solution.elements->size()) return false;
+    if (display.traced.direct_emitted.empty()) return true;
+    return display.traced.direct_emitted == emitted_on_display(scene, display);
+}
+
+void relight_display(DisplayMesh& display, const Scene& scene, const Solution& solution) {
+    check_solution_fits(scene, solution);
+    if (!display_traces_fit(display, scene, solution))
+        throw std::invalid_argument("relight_display: the display was traced for other elements or emitters");
+    light_display(display, scene, solution);
+}
+
 GatherTable display_patch_gather_table(const Scene& scene, const Solution& solution) {
     check_solution_fits(scene, solution);
-    const RayScene rays(*solution.elements);
-    const std::optional<OwnPatches> own = own_patches(scene, solution, rays);
+    ElementRays rays(*solution.elements, nullptr);
+    const std::optional<DisplayPatches> own = own_patches(scene, solution, rays);
     if (!own) return {};
     DisplayMesh rows;  // the table alone: no geometry
-    rows.patch_count = own->patches.mesh.size();
-    trace_patch_gather(rows, solution, *own, nullptr, nullptr);
+    rows.patch_count = own->mesh.size();
+    trace_patch_gather(rows, solution, *own, rays, nullptr, nullptr);
     return std::move(rows.traced.patch_gather);
 }
 

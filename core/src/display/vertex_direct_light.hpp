@@ -5,18 +5,12 @@
 #include <span>
 #include <vector>
 
+#include "light/point_direct_light.hpp"
 #include "rad/display/display_mesh.hpp"
 #include "rad/mesh/patch_mesh.hpp"
 #include "rad/ray/ray_scene.hpp"
 
 namespace rad {
-
-// Shadow rays per display vertex for its direct light, drawn over the emitter patches by power.
-inline constexpr int kVertexShadowRays = 128;
-// A vertex that sees all of the light takes the exact sum of every emitter patch's unoccluded factor where
-// vertices × emitter patches stay within this many factors; beyond, the draws' estimate, whose spread where
-// the patches' factors differ much from their weights (beside a luminous ceiling) streaks the walls.
-inline constexpr double kVertexExactFactorBudget = 2e7;
 
 // What the emitters' direct light at the vertices is traced with.
 struct VertexDirectTraceInput {
@@ -48,10 +42,10 @@ struct VertexDirectLightArrays {
 // the light's falloff over its area. At each vertex (moved a thousandth of the way towards its patches'
 // centroid, so a vertex on an edge is not in the plane of the surface beyond) the exact unoccluded
 // point-to-polygon factor of each emitter patch drawn times the share of its shadow rays that nothing blocks;
-// up to kVertexShadowRays rays drawn over the emitters by power (each drawn when they are few), so every
+// up to kDirectShadowRays rays drawn over the emitters by power (each drawn when they are few), so every
 // vertex's value is unbiased; 16 first, and the rest only where they disagree (a penumbra). Where the 16
 // all reach the light, the exact unoccluded sum over every emitter patch instead (within
-// kVertexExactFactorBudget). With split_shadow_edges, the triangles are then split along the edges where
+// kExactFactorBudget). With split_shadow_edges, the triangles are then split along the edges where
 // that light steps and the new vertices traced too, so `display` should be one build_display_mesh made
 // (a second call splits it further). Leaves it empty where no patch emits, or where the emitters are so many
 // or cover so much of the scene that the transport leaves their light to hemisphere rays (a furnace): light
@@ -81,20 +75,5 @@ struct VertexDirectLightInput {
     bool split_shadow_edges = true;
 };
 void add_vertex_direct_light(DisplayMesh& display, const VertexDirectLightInput& input);
-
-// Whether add_vertex_direct_light would trace anything for patches emitting `emitted` (E per patch), so a
-// caller can skip building the rays for a scene it leaves to the patches (a furnace). Throws
-// std::invalid_argument when `emitted` does not have one entry per patch.
-bool draws_vertex_direct_light(const PatchMesh& patches, std::span<const glm::dvec3> emitted);
-
-// H_d, the emitters' direct irradiance, at points with unit normals as add_vertex_direct_light estimates it
-// at each vertex (before the patches' means are kept; the points are where rays leave, off their surface by
-// the ray offset); 0 everywhere where it leaves the light to the patches. `emitted` is E per patch. Throws
-// std::invalid_argument when the sizes do not match.
-std::vector<glm::dvec3> direct_irradiance_at(const PatchMesh& patches, const RayScene& rays,
-                                             std::span<const glm::dvec3> emitted,
-                                             std::span<const glm::dvec3> points,
-                                             std::span<const glm::dvec3> normals, std::uint64_t seed = 1,
-                                             double exact_factor_budget = kVertexExactFactorBudget);
 
 }  // namespace rad

@@ -10,10 +10,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "display/vertex_direct_light.hpp"
+#include "light/point_direct_light.hpp"
 #include "rad/display/false_colour.hpp"
 #include "rad/display/solution_display.hpp"
 #include "ray/ray_offset.hpp"
+#include "sampling/edge_strata.hpp"
 #include "sampling/sampling.hpp"
 
 namespace rad {
@@ -58,14 +59,7 @@ glm::dvec3 mean_sky(const Sky& sky, const RayScene& scene, const Origin& o, cons
     glm::dvec3 sum(0.0);
     for (int y = 0; y < side; ++y) {
         for (int x = 0; x < side; ++x) {
-            int seen = 0, opened = 0;
-            for (const auto& [dx, dy] :
-                 {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
-                if (x + dx < 0 || x + dx >= side || y + dy < 0 || y + dy >= side) continue;
-                ++seen;
-                opened += open(x + dx, y + dy) ? 1 : 0;
-            }
-            if (splits > 0 && opened > 0 && opened < seen) {
+            if (splits > 0 && neighbours_disagree(x, y, side, open)) {
                 sum += mean_sky(sky, scene, o, corner + cell * glm::dvec2(x, y), cell, kSplit, splits - 1,
                                 random);
                 continue;

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "sampling/bilinear_quad.hpp"
+#include "sampling/edge_strata.hpp"
 #include "sampling/sampling.hpp"
 #include "transport/uniform/form_factors_hemisphere.hpp"
 
@@ -93,14 +94,8 @@ void choose_split_strata(const Scratch& s, int side, std::size_t cap, std::vecto
     const auto escaped = [&](int x, int y) { return s.hits[y * side + x].patch == RayHit::kMissed; };
     for (int y = 0; y < side && split.size() < cap; ++y) {
         for (int x = 0; x < side && split.size() < cap; ++x) {
-            int seen = 0, open = 0;
-            for (const auto& [dx, dy] :
-                 {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}}) {
-                if (x + dx < 0 || x + dx >= side || y + dy < 0 || y + dy >= side) continue;
-                ++seen;
-                open += escaped(x + dx, y + dy) ? 1 : 0;
-            }
-            if (open > 0 && open < seen) split.push_back(static_cast<std::uint32_t>(y * side + x));
+            if (neighbours_disagree(x, y, side, escaped))
+                split.push_back(static_cast<std::uint32_t>(y * side + x));
         }
     }
 }

@@ -1,4 +1,4 @@
-#include "display/vertex_emitters.hpp"
+#include "light/emitters.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
 #pragma once
 
-// The emitter patches a display vertex draws its direct light from. Private to the library.
+// The emitter patches a point (a display vertex, a sensor) draws the emitters' direct light from. Private to
+// the library.
 
 #include <cstdint>
 #include <glm/vec3.hpp>
